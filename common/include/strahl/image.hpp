@@ -1,0 +1,45 @@
+// Images: linear float RGB in memory, written and read in any format OpenImageIO knows, by extension.
+// 8-bit formats (PNG, JPEG) are written sRGB-encoded and clamped to [0, 1]; float formats (EXR, HDR) keep
+// the linear values. Reading reverses that, so a PNG round trip is exact to within 8-bit quantisation.
+#pragma once
+#include "strahl/math.hpp"
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace strahl {
+
+struct image {
+    int width = 0, height = 0;
+    std::vector<color> pixels;  // row-major, row 0 at the top
+
+    image() = default;
+    image(int w, int h, color fill = color(0.0f)) : width(w), height(h), pixels(std::size_t(w) * h, fill) {}
+    color& at(int x, int y) { return pixels[std::size_t(y) * width + x]; }
+    const color& at(int x, int y) const { return pixels[std::size_t(y) * width + x]; }
+};
+
+// Cannot write or read an image: unknown extension, unwritable path, missing or corrupt file.
+class image_error : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+void write_image(const std::filesystem::path& file, const image& img);
+image read_image(const std::filesystem::path& file);
+
+struct image_difference {
+    double rmse = 0.0;              // root mean square over all channels
+    double max_error = 0.0;         // largest absolute channel difference
+    std::size_t differing_pixels = 0;  // pixels with any channel differing by more than the tolerance
+};
+// Throws std::invalid_argument when the sizes differ.
+image_difference compare(const image& a, const image& b, float tolerance = 0.0f);
+
+// A heat map of per-pixel values (counts of box tests, say): a perceptual colour ramp from the smallest to
+// the largest value, with a colour legend strip added below the picture, labelled with the range and the
+// given label (e.g. "box tests per ray"). values.size() must be width * height.
+image heat_map(const std::vector<float>& values, int width, int height, const std::string& label);
+
+}  // namespace strahl

@@ -1,0 +1,57 @@
+// What every program of the course shares: command-line options with --help, an error policy, and the
+// rule that nothing the user wrote is overwritten without being asked.
+#pragma once
+#include <filesystem>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace strahl {
+
+// A wrong command line: unknown option, missing or malformed value. Programs print it with the usage.
+class usage_error : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+// A tiny option parser: --name VALUE, --name=VALUE and --flag. --help is always there.
+class cli {
+public:
+    cli(std::string program, std::string summary);
+
+    cli& flag(const std::string& name, const std::string& help);
+    cli& option(const std::string& name, const std::string& value_name, const std::string& default_value,
+                const std::string& help);
+
+    // Returns false when --help was given (usage already printed to stdout): the program exits 0.
+    // Throws usage_error on anything it does not understand.
+    bool parse(int argc, const char* const* argv);
+
+    bool has(const std::string& flag_name) const;     // a flag given, or an option given explicitly
+    std::string get(const std::string& name) const;   // the option's value or its default
+    int get_int(const std::string& name) const;       // throws usage_error if not an integer
+    double get_double(const std::string& name) const;  // throws usage_error if not a finite number
+    std::string usage() const;
+
+private:
+    struct entry {
+        std::string name, value_name, default_value, help;
+        bool is_flag;
+    };
+    const entry& find(const std::string& name) const;
+    std::string program_, summary_;
+    std::vector<entry> entries_;
+    std::map<std::string, std::string> values_;
+};
+
+// Runs body(), the program's real main, and turns exceptions into one clear line on stderr and an exit code:
+// 2 for a usage error (with a pointer to --help), 3 for an exercise not done yet, 1 for any other error.
+int guarded_main(const char* program, int (*body)(int, const char* const*), int argc, const char* const* argv);
+
+// Prepares to write `file`: creates its folder and refuses (std::runtime_error) to replace an existing file
+// the user named themselves (user_named) unless force is set. Files in the course's own out/ folders are
+// the course's to regenerate. Also fails early, with a clear message, when the folder cannot be written.
+void prepare_output(const std::filesystem::path& file, bool user_named, bool force);
+
+}  // namespace strahl

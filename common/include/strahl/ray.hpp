@@ -1,0 +1,31 @@
+// A ray and the record of its closest hit, as every acceleration structure in the course exchanges them.
+#pragma once
+#include "strahl/math.hpp"
+
+namespace strahl {
+
+// Points org + t * dir for t in [tmin, tmax]. dir need not be normalised; t is in units of |dir|.
+struct ray {
+    vec3 org{0.0f};
+    vec3 dir{0.0f, 0.0f, 1.0f};
+    float tmin = 0.0f;
+    float tmax = inf;
+
+    vec3 at(float t) const { return org + t * dir; }
+};
+
+inline constexpr std::uint32_t invalid_id = 0xFFFFFFFFu;
+
+// The closest hit found so far. A miss is t == +inf and prim == invalid_id.
+// (u, v) are the barycentric coordinates of the hit within triangle prim: p = (1-u-v) v0 + u v1 + v v2.
+struct hit {
+    float t = inf;
+    std::uint32_t prim = invalid_id;
+    float u = 0.0f;
+    float v = 0.0f;
+    std::uint32_t inst = invalid_id;  // instance id, for two-level structures (chapter 10)
+
+    bool found() const { return prim != invalid_id; }
+};
+
+}  // namespace strahl

@@ -1,0 +1,120 @@
+// Scenes: one triangle mesh, optional analytic spheres and planes (chapter 01 needs them), materials,
+// point lights and a default camera. Loaded from files with assimp or made procedurally.
+//
+// Primitive ids: triangle i of scene.mesh has primitive id i. Every loader and generator documents the
+// order in which it emits triangles, so a hit file written today names the same triangle tomorrow.
+#pragma once
+#include "strahl/aabb.hpp"
+#include "strahl/camera.hpp"
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <iosfwd>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace strahl {
+
+struct triangle_mesh {
+    std::vector<vec3> positions;
+    std::vector<uvec3> indices;  // one index triple per triangle, into positions
+
+    std::size_t triangle_count() const { return indices.size(); }
+    std::array<vec3, 3> triangle(std::size_t i) const {
+        const uvec3 t = indices[i];
+        return {positions[t.x], positions[t.y], positions[t.z]};
+    }
+    aabb bounds() const;  // of the referenced vertices; empty for an empty mesh
+    // Appends other's triangles after this mesh's (ids continue), re-basing its indices.
+    void append(const triangle_mesh& other);
+};
+
+enum class material_kind { diffuse, mirror, rough_mirror };
+
+struct material_desc {
+    std::string name = "default";
+    material_kind kind = material_kind::diffuse;
+    color albedo{0.8f};     // diffuse reflectance, or the mirror's reflectance
+    float roughness = 0.0f;  // rough mirror only: spread of the reflected lobe, 0 = perfect mirror
+};
+
+struct sphere_desc {
+    vec3 center{0.0f};
+    float radius = 1.0f;
+    std::uint32_t material = 0;
+};
+
+// The plane of points p with dot(normal, p) == offset; normal is unit length.
+struct plane_desc {
+    vec3 normal{0.0f, 1.0f, 0.0f};
+    float offset = 0.0f;
+    std::uint32_t material = 0;
+};
+
+// Isotropic point light; intensity in W/sr per colour channel (irradiance falls off as 1/d^2).
+struct point_light {
+    vec3 position{0.0f};
+    color intensity{1.0f};
+};
+
+struct scene {
+    std::string name;
+    triangle_mesh mesh;
+    std::vector<std::uint32_t> triangle_materials;  // empty: every triangle uses material 0
+    std::vector<sphere_desc> spheres;
+    std::vector<plane_desc> planes;
+    std::vector<material_desc> materials{material_desc{}};  // never empty
+    std::vector<point_light> lights;
+    camera_desc camera;
+
+    std::uint32_t triangle_material(std::size_t i) const {
+        return triangle_materials.empty() ? 0u : triangle_materials[i];
+    }
+    aabb bounds() const;  // triangles and spheres; planes are unbounded and left out
+};
+
+// A file that cannot be turned into a scene: missing, unreadable, malformed, truncated, empty, or holding
+// non-finite coordinates. The message names the file and what is wrong with it.
+class load_error : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+// Loads OBJ, PLY, glTF (and whatever else assimp reads) as one triangle mesh. Polygons are triangulated;
+// meshes are concatenated in assimp's node order, each mesh's faces in file order. Throws load_error.
+// Where log is given, prints one line: file, triangles, vertices.
+//
+// Triangle order (the primitive ids): the node tree is walked depth first from the root; a node's own
+// meshes come in its mesh-list order before its children, each with the node's accumulated transform (a
+// mesh used by two nodes appears twice). Within a mesh, faces come in file order; a polygon of n corners
+// becomes n - 2 triangles in place (assimp's aiProcess_Triangulate: a quad a b c d gives a b c, a c d).
+// For OBJ every object/group (and material change) is one mesh, in file order under the root; a PLY is one
+// mesh. Points and lines are skipped. Vertices: identical vertices within a mesh are welded
+// (aiProcess_JoinIdenticalVertices), unreferenced ones dropped, numbered in order of first use.
+// Errors: missing file, a directory, an empty file, a truncated PLY (more vertices or faces declared than
+// present), indices out of range (OBJ: zero, negative before any vertex, beyond the last vertex), NaN or
+// Inf in a referenced vertex, a file assimp cannot read, and a file with no triangles.
+triangle_mesh load_mesh(const std::filesystem::path& file, std::ostream* log = nullptr);
+
+// load_mesh plus what a render needs: one diffuse material, a camera framing the mesh from the front
+// (+z looking at -z) and a point light near the camera.
+scene load_scene(const std::filesystem::path& file, std::ostream* log = nullptr);
+
+// "builtin:NAME" (see builtin_scene_names) or a file path.
+scene load_scene_spec(const std::string& spec, std::ostream* log = nullptr);
+
+// Camera and light framing a bounding box from the front, as load_scene places them.
+// The camera sits on +z of the box centre, looks at it with up = +y, and fits the box's bounding sphere
+// into the vertical field of view with a 10% margin (for images at least as wide as tall).
+camera_desc frame_camera(const aabb& box, float vfov_degrees = 40.0f);
+
+// A point light above and to the right of the camera's eye (by a quarter of the box diagonal), with an
+// intensity of pi * d^2 for its distance d to the box centre: an irradiance of pi there, so a white
+// diffuse surface at the centre facing the light has a radiance equal to its albedo.
+point_light frame_light(const aabb& box, const camera_desc& camera);
+
+// A one-line summary: "bunny.ply: 69,451 triangles, 34,834 vertices".
+std::string describe(const scene& s);
+
+}  // namespace strahl

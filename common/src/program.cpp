@@ -1,0 +1,151 @@
+#include "strahl/program.hpp"
+#include "strahl/todo.hpp"
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <unistd.h>
+
+namespace strahl {
+
+namespace {
+// "--name". (Spelled out rather than dashed(name), which trips a false -Wrestrict in g++ 12, PR 105329.)
+std::string dashed(const std::string& name) {
+    std::string s = "--";
+    s += name;
+    return s;
+}
+}  // namespace
+
+cli::cli(std::string program, std::string summary) : program_(std::move(program)), summary_(std::move(summary)) {
+    flag("help", "print this help and exit");
+}
+
+cli& cli::flag(const std::string& name, const std::string& help) {
+    entries_.push_back({name, "", "", help, true});
+    return *this;
+}
+
+cli& cli::option(const std::string& name, const std::string& value_name, const std::string& default_value,
+                 const std::string& help) {
+    entries_.push_back({name, value_name, default_value, help, false});
+    return *this;
+}
+
+const cli::entry& cli::find(const std::string& name) const {
+    for (const entry& e : entries_)
+        if (e.name == name) return e;
+    throw usage_error("unknown option --" + name);
+}
+
+bool cli::parse(int argc, const char* const* argv) {
+    for (int i = 1; i < argc; ++i) {
+        std::string arg = argv[i];
+        if (arg.rfind("--", 0) != 0 || arg.size() == 2) throw usage_error("unexpected argument '" + arg + "'");
+        arg = arg.substr(2);
+        std::string value;
+        bool has_value = false;
+        if (const auto eq = arg.find('='); eq != std::string::npos) {
+            value = arg.substr(eq + 1);
+            arg = arg.substr(0, eq);
+            has_value = true;
+        }
+        const entry& e = find(arg);
+        if (e.is_flag) {
+            if (has_value) throw usage_error(dashed(arg) + " takes no value");
+            values_.insert_or_assign(arg, std::string(1, '1'));  // flags read as "1"
+            continue;
+        }
+        if (!has_value) {
+            if (i + 1 >= argc) throw usage_error(dashed(arg) + " needs a value (" + e.value_name + ")");
+            value = argv[++i];
+        }
+        values_[arg] = value;
+    }
+    if (has("help")) {
+        std::cout << usage();
+        return false;
+    }
+    return true;
+}
+
+bool cli::has(const std::string& name) const {
+    find(name);
+    return values_.count(name) != 0;
+}
+
+std::string cli::get(const std::string& name) const {
+    const entry& e = find(name);
+    const auto it = values_.find(name);
+    return it != values_.end() ? it->second : e.default_value;
+}
+
+int cli::get_int(const std::string& name) const {
+    const std::string s = get(name);
+    std::size_t used = 0;
+    long v = 0;
+    try { v = std::stol(s, &used); } catch (const std::exception&) { used = 0; }
+    if (used != s.size() || s.empty() || v < -2147483647L || v > 2147483647L)
+        throw usage_error(dashed(name) + " expects an integer, got '" + s + "'");
+    return int(v);
+}
+
+double cli::get_double(const std::string& name) const {
+    const std::string s = get(name);
+    std::size_t used = 0;
+    double v = 0.0;
+    try { v = std::stod(s, &used); } catch (const std::exception&) { used = 0; }
+    if (used != s.size() || s.empty() || !std::isfinite(v))
+        throw usage_error(dashed(name) + " expects a finite number, got '" + s + "'");
+    return v;
+}
+
+std::string cli::usage() const {
+    std::ostringstream out;
+    out << "usage: " << program_ << " [options]\n\n" << summary_ << "\n\noptions:\n";
+    for (const entry& e : entries_) {
+        std::string left = "  --";
+        left += e.name;
+        if (!e.is_flag) left.append(" ").append(e.value_name);
+        if (left.size() < 28) left.resize(28, ' ');
+        else left.append("\n").append(28, ' ');
+        out << left << e.help;
+        if (!e.is_flag && !e.default_value.empty()) out << " (default: " << e.default_value << ")";
+        out << "\n";
+    }
+    return out.str();
+}
+
+int guarded_main(const char* program, int (*body)(int, const char* const*), int argc, const char* const* argv) {
+    try {
+        return body(argc, argv);
+    } catch (const usage_error& e) {
+        std::cerr << program << ": " << e.what() << " (see " << program << " --help)\n";
+        return 2;
+    } catch (const not_implemented& e) {
+        std::cerr << program << ": " << e.what() << "\n";
+        return 3;
+    } catch (const std::exception& e) {
+        std::cerr << program << ": error: " << e.what() << "\n";
+        return 1;
+    }
+}
+
+void prepare_output(const std::filesystem::path& file, bool user_named, bool force) {
+    namespace fs = std::filesystem;
+    if (file.empty()) throw std::runtime_error("empty output path");
+    std::error_code ec;
+    if (fs::is_directory(file, ec)) throw std::runtime_error("cannot write '" + file.string() + "': it is a folder");
+    if (user_named && !force && fs::exists(file, ec))
+        throw std::runtime_error("'" + file.string() + "' exists; not overwriting it (pass --force to replace it)");
+    const fs::path folder = file.has_parent_path() ? file.parent_path() : fs::path(".");
+    fs::create_directories(folder, ec);
+    if (!fs::is_directory(folder))
+        throw std::runtime_error("cannot create folder '" + folder.string() + "' for '" + file.string() + "'" +
+                                 (ec ? ": " + ec.message() : std::string()));
+    if (access(folder.c_str(), W_OK) != 0)
+        throw std::runtime_error("cannot write into folder '" + folder.string() + "' (permission denied)");
+}
+
+}  // namespace strahl
