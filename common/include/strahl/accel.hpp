@@ -1,0 +1,58 @@
+// The one interface of every acceleration structure in the course: build over a scene's triangles, then
+// answer batches of closest-hit and any-hit queries. The race, the tests and strahl-trace all use it, so a
+// structure registered once (chapters/16_race) appears everywhere.
+//
+// One virtual call per batch; the loop inside a batch is the structure's own, fully inlined code.
+#pragma once
+#include "strahl/ray.hpp"
+#include "strahl/scene.hpp"
+#include "strahl/stats.hpp"
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
+
+namespace strahl {
+
+class accel {
+public:
+    virtual ~accel() = default;
+
+    virtual std::string name() const = 0;
+
+    // Builds over s.mesh: primitive id i is triangle i. (Spheres and planes are chapter 01's business.)
+    virtual void build(const scene& s) = 0;
+
+    // Closest hit with t in (tmin, tmax) per ray, under the rule of closer() (ray.hpp); a miss leaves
+    // t = inf, prim = invalid_id.
+    // const and thread-safe: the race calls it on chunks of one batch from several threads.
+    virtual void intersect(std::span<const ray> rays, std::span<hit> hits) const = 0;
+
+    // Any hit with t in (tmin, tmax) per ray, the interval of the closest-hit query: blocked[i] = 1 if there
+    // is one, else 0.
+    virtual void occluded(std::span<const ray> rays, std::span<std::uint8_t> blocked) const = 0;
+
+    // The same queries, counting box tests, primitive tests and nodes visited; nullopt where the structure
+    // cannot count (Embree). Results must equal the uncounted queries'.
+    virtual std::optional<counter_values> intersect_counted(std::span<const ray> rays, std::span<hit> hits) const {
+        (void)rays, (void)hits;
+        return std::nullopt;
+    }
+    virtual std::optional<counter_values> occluded_counted(std::span<const ray> rays,
+                                                           std::span<std::uint8_t> blocked) const {
+        (void)rays, (void)blocked;
+        return std::nullopt;
+    }
+
+    // Bytes the built structure holds (nodes, index arrays, copies of geometry it made).
+    virtual std::size_t memory_bytes() const = 0;
+
+    // The SAH cost of the built tree (chapter 05's definition, normalised by the root's area) where defined.
+    virtual std::optional<double> sah_cost() const { return std::nullopt; }
+
+    // True for the course's structures, which must reproduce brute force bit for bit; false for Embree,
+    // whose own triangle test may differ on a handful of edge cases (the race counts them).
+    virtual bool exact() const { return true; }
+};
+
+}  // namespace strahl
