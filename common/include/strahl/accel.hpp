@@ -50,6 +50,10 @@ public:
     // The SAH cost of the built tree (chapter 05's definition, normalised by the root's area) where defined.
     virtual std::optional<double> sah_cost() const { return std::nullopt; }
 
+    // Batches handed to intersect()/occluded() from a split of a larger batch start at multiples of this
+    // many rays (packet tracers that group rays by pixel tiles need whole tile rows).
+    virtual std::size_t batch_alignment() const { return 1; }
+
     // True for the course's structures, which must reproduce brute force bit for bit; false for Embree,
     // whose own triangle test may differ on a handful of edge cases (the race counts them).
     virtual bool exact() const { return true; }

@@ -1,0 +1,45 @@
+// Measuring one structure on one ray set, the same way for every structure: build time, memory, SAH cost,
+// Mrays/s of closest-hit and any-hit queries (median of timed runs after a warm-up), tests per ray from a
+// counting run, and how many rays' results differ from the reference (brute force).
+#pragma once
+#include "strahl/accel.hpp"
+#include "strahl/race/ray_sets.hpp"
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace strahl::race {
+
+// The exact answers for one ray set, from brute force.
+struct reference {
+    std::vector<hit> closest;
+    std::vector<std::uint8_t> any;
+};
+
+struct timing_rules {
+    int repeats = 5;           // timed runs after one warm-up run
+    double budget_s = 4.0;     // stop repeating once this much time went into one query (at least 1 run)
+    int threads = 1;
+    std::size_t count_rays = 8192;  // the counting run uses every k-th ray, at most this many
+};
+
+struct query_result {
+    double mrays = 0.0;       // median, million rays per second
+    int runs = 0;             // timed runs behind the median
+    std::size_t rays = 0;     // rays per run
+    std::size_t differing = 0;  // rays whose result differs from the reference (see agrees())
+    std::optional<double> box_per_ray, prim_per_ray, nodes_per_ray;
+};
+
+// Times a.intersect (closest) or a.occluded (any) on rays and compares with the reference.
+query_result measure_closest(const accel& a, std::span<const ray> rays, const std::vector<hit>& ref,
+                             const timing_rules& rules);
+query_result measure_any(const accel& a, std::span<const ray> rays, const std::vector<std::uint8_t>& ref,
+                         const timing_rules& rules);
+
+// Whether a closest hit agrees with the reference. For the course's structures (exact): both misses, or
+// the same primitive with bit-identical t, u and v. For Embree, whose triangle test rounds differently:
+// both misses, or the same primitive.
+bool agrees(const hit& a, const hit& reference, bool exact);
+
+}  // namespace strahl::race

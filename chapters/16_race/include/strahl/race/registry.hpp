@@ -1,0 +1,32 @@
+// Every acceleration structure the race, strahl-trace and the tests know, by name. A chapter adds its
+// structure with one line in src/registry.cpp.
+#pragma once
+#include "strahl/accel.hpp"
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace strahl::race {
+
+struct accel_entry {
+    std::string name;         // what --accel takes
+    std::string chapter;      // "01", "16", ... (Embree: "--")
+    std::string description;  // one line
+    std::function<std::unique_ptr<accel>()> make;
+    bool linear = false;      // cost grows linearly with triangles (brute force): the race samples its rays
+};
+
+struct registry_options {
+    int threads = 1;         // Embree's build threads
+    int packet_width = 0;    // image width for Embree's 4x2 packets of primary rays (0: no packet entry)
+};
+
+// In the order the race lists them: brute force first, then the chapters in order, Embree last.
+// Embree's entries are present only where Embree was found.
+std::vector<accel_entry> registered_accels(const registry_options& options = {});
+
+// The entry of that name; throws std::invalid_argument listing the names otherwise.
+accel_entry find_accel(const std::string& name, const registry_options& options = {});
+
+}  // namespace strahl::race

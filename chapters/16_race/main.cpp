@@ -1,0 +1,185 @@
+// The race: every registered structure on every scene and ray set, measured the same way, Embree beside
+// them in the same run. Prints a table and writes out/16_race/race.csv, race.md, plots and scene images.
+#include "strahl/image.hpp"
+#include "strahl/procedural.hpp"
+#include "strahl/program.hpp"
+#include "strahl/progress.hpp"
+#include "strahl/race/brute_force.hpp"
+#include "strahl/race/embree_accel.hpp"
+#include "strahl/race/registry.hpp"
+#include "strahl/race/report.hpp"
+#include "strahl/timer.hpp"
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <thread>
+
+using namespace strahl;
+using namespace strahl::race;
+
+namespace {
+
+std::vector<std::string> split(const std::string& s) {
+    std::vector<std::string> out;
+    std::stringstream in(s);
+    for (std::string item; std::getline(in, item, ',');)
+        if (!item.empty()) out.push_back(item);
+    return out;
+}
+
+std::string machine_name() {
+    std::ifstream cpu("/proc/cpuinfo");
+    std::string line, model = "unknown CPU";
+    while (std::getline(cpu, line))
+        if (line.rfind("model name", 0) == 0) { model = line.substr(line.find(':') + 2); break; }
+    return model + ", " + std::to_string(std::thread::hardware_concurrency()) + " hardware threads";
+}
+
+// Default scenes: the built-in ones, and the course's shared meshes where they sit beside the clone.
+std::vector<std::string> default_scenes(bool quick) {
+    std::vector<std::string> s = {"builtin:cornell", "builtin:teapot", "builtin:teapot_stadium", "builtin:soup"};
+    if (quick) return s;
+    for (const char* mesh : {"bunny.ply", "armadillo.obj", "ogre.obj", "sponza.obj"}) {
+        const std::filesystem::path p = std::filesystem::path(STRAHL_SHARED_SCENES) / mesh;
+        if (std::filesystem::exists(p)) s.push_back(p.string());
+    }
+    return s;
+}
+
+// The scene seen through its camera: primary hits shaded by how squarely they face the ray.
+image primary_image(const scene& s, std::span<const ray> rays, const std::vector<hit>& hits, int w, int h) {
+    image img(w, h);
+    for (std::size_t i = 0; i < hits.size(); ++i) {
+        if (!hits[i].found()) continue;
+        const auto t = s.mesh.triangle(hits[i].prim);
+        const vec3 n = glm::normalize(glm::cross(t[1] - t[0], t[2] - t[0]));
+        const float facing = std::abs(glm::dot(n, glm::normalize(rays[i].dir)));
+        img.pixels[i] = color(0.1f + 0.8f * facing);
+    }
+    return img;
+}
+
+int run(int argc, const char* const* argv) {
+    cli args("race", "Every structure on every scene and ray set, measured the same way, Embree beside them.\n"
+                     "Writes out/16_race/race.csv, race.md, speed_vs_build.svg, staircase.svg and one image per scene.");
+    args.option("scenes", "LIST", "", "comma-separated scenes: builtin:NAME or mesh files (default: the built-in "
+                                      "scenes, plus ../shared/scenes meshes unless --quick)")
+        .option("accels", "LIST", "", "comma-separated structures (default: all; see strahl-trace --list)")
+        .option("rays", "LIST", "primary,diffuse,shadow", "ray sets")
+        .option("threads", "N", "1", "threads tracing (1: the single-thread table)")
+        .option("width", "W", "", "image width of the ray sets (default 256, quick 96)")
+        .option("height", "H", "", "image height (default 192, quick 72)")
+        .option("repeats", "K", "5", "timed runs after a warm-up; the median is reported")
+        .option("budget", "S", "", "seconds one query may take before repeats stop, at least one run (default 4, quick 2)")
+        .option("out", "DIR", "out/16_race", "where the tables, plots and images go")
+        .flag("quick", "built-in scenes only, 96x72 rays, 3 repeats: what ./course run runs");
+    if (!args.parse(argc, argv)) return 0;
+    const bool quick = args.has("quick");
+    const int threads = args.get_int("threads");
+    const int w = args.has("width") ? args.get_int("width") : quick ? 96 : 256;
+    const int h = args.has("height") ? args.get_int("height") : quick ? 72 : 192;
+    if (threads < 1 || w < 4 || h < 2 || w > 8192 || h > 8192 || w % 4 || h % 2)
+        throw usage_error("need --threads >= 1, a width in 4..8192 divisible by 4 and an even height in 2..8192");
+    timing_rules rules;
+    rules.repeats = args.has("repeats") ? args.get_int("repeats") : quick ? 3 : 5;
+    rules.budget_s = args.has("budget") ? args.get_double("budget") : quick ? 2.0 : 4.0;
+    rules.threads = threads;
+    if (rules.repeats < 1 || rules.budget_s <= 0.0) throw usage_error("--repeats and --budget must be positive");
+    const std::filesystem::path out = args.get("out");
+    prepare_output(out / "race.csv", false, false);
+
+    std::vector<ray_kind> kinds;
+    for (const std::string& k : split(args.get("rays"))) kinds.push_back(parse_ray_kind(k));
+    const registry_options reg{threads, w};
+    std::vector<accel_entry> entries;
+    if (args.has("accels")) for (const std::string& n : split(args.get("accels"))) entries.push_back(find_accel(n, reg));
+    else entries = registered_accels(reg);
+    if (!embree_available()) std::cout << "Embree 3 was not found at build time: the race runs without it.\n";
+    std::cout << "race: " << w << "x" << h << " rays per set, " << threads << " thread" << (threads > 1 ? "s" : "")
+              << ", median of " << rules.repeats << " after a warm-up (" << rules.budget_s << " s budget per query)\n";
+
+    const int ref_threads = int(std::max(1u, std::thread::hardware_concurrency()));
+    std::vector<race_row> rows;
+    timer total;
+    const std::vector<std::string> scenes = args.has("scenes") ? split(args.get("scenes")) : default_scenes(quick);
+    progress_bar progress("race", scenes.size() * kinds.size() * entries.size(), "rows");
+    for (const std::string& spec : scenes) {
+        const scene s = load_scene_spec(spec, &std::cout);
+        const std::string scene_name = s.name.empty() ? spec : s.name;
+        brute_force exact;
+        exact.build(s);
+        const std::vector<ray> primary = primary_rays(s, w, h);
+        std::vector<hit> primary_hits(primary.size());
+        trace_closest(exact, primary, primary_hits, ref_threads);
+        write_image(out / (scene_name + ".png"), primary_image(s, primary, primary_hits, w, h));
+
+        for (ray_kind kind : kinds) {
+            const std::vector<ray> rays = kind == ray_kind::primary ? primary
+                                          : secondary_rays(kind, s, primary, primary_hits, 1);
+            reference ref{std::vector<hit>(rays.size()), std::vector<std::uint8_t>(rays.size())};
+            trace_closest(exact, rays, ref.closest, ref_threads);
+            trace_any(exact, rays, ref.any, ref_threads);
+            // Linear-cost structures on big scenes trace an evenly spread sample of the rays.
+            const std::size_t linear_limit = std::max<std::size_t>(256, std::size_t(2e9 / double(std::max<std::size_t>(1, s.mesh.triangle_count()))));
+            for (const accel_entry& e : entries) {
+                const bool packet = e.name.find("packet8") != std::string::npos;
+                if (packet && kind != ray_kind::primary) {
+                    progress.add();
+                    continue;
+                }
+                std::unique_ptr<accel> a = e.make();
+                race_row r;
+                r.scene = scene_name;
+                r.triangles = s.mesh.triangle_count();
+                r.accel = a->name();
+                r.chapter = e.chapter;
+                r.exact = a->exact();
+                r.ray_set = to_string(kind);
+                timer build;
+                a->build(s);
+                r.build_ms = build.milliseconds();
+                r.memory_bytes = a->memory_bytes();
+                r.sah = a->sah_cost();
+                std::span<const ray> traced = rays;
+                reference sub;
+                std::vector<ray> sampled;
+                if (e.linear && rays.size() > linear_limit) {
+                    const std::size_t stride = (rays.size() + linear_limit - 1) / linear_limit;
+                    for (std::size_t i = 0; i < rays.size(); i += stride) {
+                        sampled.push_back(rays[i]);
+                        sub.closest.push_back(ref.closest[i]);
+                        sub.any.push_back(ref.any[i]);
+                    }
+                    traced = sampled;
+                    r.ray_set += "~";  // marks a sampled row in the table
+                }
+                const reference& compare = sampled.empty() ? ref : sub;
+                // Shadow rays ask for any hit only; Embree's packets are timed on primary rays, closest hit.
+                if (!packet) r.any = measure_any(*a, traced, compare.any, rules);
+                if (kind != ray_kind::shadow) r.closest = measure_closest(*a, traced, compare.closest, rules);
+                rows.push_back(r);
+                progress.add();
+            }
+        }
+    }
+    progress.finish();
+    add_embree_ratios(rows);
+    print_table(std::cout, rows);
+    const std::string machine = machine_name();
+    std::ofstream(out / "race.csv") << to_csv(rows);
+    std::ofstream(out / "race.md") << to_markdown(rows, machine);
+    write_plots(out, rows);
+    std::printf("\nmachine: %s; the race took %.1f s\n", machine.c_str(), total.seconds());
+    std::cout << "wrote " << (out / "race.csv").string() << ", race.md, speed_vs_build.svg, staircase.svg and scene images\n";
+    const std::size_t wrong = wrong_rows(rows);
+    if (wrong) {
+        std::cout << wrong << " row(s) of course structures differ from brute force: a bug.\n";
+        return 1;
+    }
+    return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) { return guarded_main("race", run, argc, argv); }

@@ -1,0 +1,83 @@
+#include "strahl/race/measure.hpp"
+#include "strahl/timer.hpp"
+#include <cstring>
+
+namespace strahl::race {
+
+namespace {
+
+bool bits_equal(float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+// Warm-up, then up to rules.repeats timed runs within the time budget; a warm-up that alone exceeds a
+// quarter of the budget counts as the first timed run (slow structures on big scenes run once).
+template <class Run>
+std::vector<double> time_runs(const timing_rules& rules, Run&& run) {
+    std::vector<double> seconds;
+    timer warm;
+    run();
+    const double first = warm.seconds();
+    if (first > rules.budget_s / 4.0) return {first};
+    double spent = first;
+    for (int k = 0; k < rules.repeats && (k == 0 || spent < rules.budget_s); ++k) {
+        timer t;
+        run();
+        seconds.push_back(t.seconds());
+        spent += seconds.back();
+    }
+    return seconds;
+}
+
+// Every k-th ray, at most `limit` of them: the counting run's sample.
+std::vector<ray> sample(std::span<const ray> rays, std::size_t limit) {
+    const std::size_t stride = std::max<std::size_t>(1, (rays.size() + limit - 1) / std::max<std::size_t>(1, limit));
+    std::vector<ray> out;
+    for (std::size_t i = 0; i < rays.size(); i += stride) out.push_back(rays[i]);
+    return out;
+}
+
+void per_ray(query_result& q, const std::optional<counter_values>& c) {
+    if (!c || c->rays == 0) return;
+    q.box_per_ray = c->per_ray(c->box_tests);
+    q.prim_per_ray = c->per_ray(c->prim_tests);
+    q.nodes_per_ray = c->per_ray(c->nodes_visited);
+}
+
+}  // namespace
+
+bool agrees(const hit& a, const hit& b, bool exact) {
+    if (!a.found() || !b.found()) return a.found() == b.found();
+    if (!exact) return a.prim == b.prim;
+    return a.prim == b.prim && bits_equal(a.t, b.t) && bits_equal(a.u, b.u) && bits_equal(a.v, b.v);
+}
+
+query_result measure_closest(const accel& a, std::span<const ray> rays, const std::vector<hit>& ref,
+                             const timing_rules& rules) {
+    query_result q;
+    q.rays = rays.size();
+    std::vector<hit> hits(rays.size());
+    const std::vector<double> s = time_runs(rules, [&] { trace_closest(a, rays, hits, rules.threads); });
+    q.runs = int(s.size());
+    q.mrays = rays.empty() ? 0.0 : double(rays.size()) / median(s) / 1e6;
+    for (std::size_t i = 0; i < rays.size(); ++i) q.differing += !agrees(hits[i], ref[i], a.exact());
+    const std::vector<ray> few = sample(rays, rules.count_rays);
+    std::vector<hit> few_hits(few.size());
+    per_ray(q, a.intersect_counted(few, few_hits));
+    return q;
+}
+
+query_result measure_any(const accel& a, std::span<const ray> rays, const std::vector<std::uint8_t>& ref,
+                         const timing_rules& rules) {
+    query_result q;
+    q.rays = rays.size();
+    std::vector<std::uint8_t> blocked(rays.size());
+    const std::vector<double> s = time_runs(rules, [&] { trace_any(a, rays, blocked, rules.threads); });
+    q.runs = int(s.size());
+    q.mrays = rays.empty() ? 0.0 : double(rays.size()) / median(s) / 1e6;
+    for (std::size_t i = 0; i < rays.size(); ++i) q.differing += blocked[i] != ref[i];
+    const std::vector<ray> few = sample(rays, rules.count_rays);
+    std::vector<std::uint8_t> few_blocked(few.size());
+    per_ray(q, a.occluded_counted(few, few_blocked));
+    return q;
+}
+
+}  // namespace strahl::race

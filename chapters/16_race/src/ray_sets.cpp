@@ -1,0 +1,101 @@
+#include "strahl/race/ray_sets.hpp"
+#include "strahl/ch01/world.hpp"
+#include "strahl/parallel.hpp"
+#include "strahl/rng.hpp"
+#include "strahl/sampling.hpp"
+#include <stdexcept>
+
+namespace strahl::race {
+
+ray_kind parse_ray_kind(const std::string& name) {
+    if (name == "primary") return ray_kind::primary;
+    if (name == "diffuse") return ray_kind::diffuse;
+    if (name == "shadow") return ray_kind::shadow;
+    throw std::invalid_argument("unknown ray set '" + name + "' (have: primary, diffuse, shadow)");
+}
+
+std::string to_string(ray_kind k) {
+    switch (k) {
+        case ray_kind::primary: return "primary";
+        case ray_kind::diffuse: return "diffuse";
+        case ray_kind::shadow: return "shadow";
+    }
+    return "?";
+}
+
+std::vector<ray> primary_rays(const scene& s, int width, int height) {
+    if (width < 1 || height < 1) throw std::invalid_argument("primary_rays: image size must be positive");
+    const camera cam(s.camera, width, height);
+    std::vector<ray> rays;
+    rays.reserve(std::size_t(width) * height);
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) rays.push_back(cam.pixel_ray(x, y));
+    return rays;
+}
+
+std::vector<ray> secondary_rays(ray_kind kind, const scene& s, std::span<const ray> primary,
+                                std::span<const hit> primary_hits, std::uint64_t seed) {
+    if (kind == ray_kind::primary) throw std::invalid_argument("secondary_rays: primary rays are not secondary");
+    if (kind == ray_kind::shadow && s.lights.empty())
+        throw std::invalid_argument("scene '" + s.name + "' has no point light for shadow rays");
+    if (primary.size() != primary_hits.size()) throw std::invalid_argument("secondary_rays: rays and hits differ in count");
+    pcg32 rng(seed, 0x5eed);
+    std::vector<ray> rays;
+    for (std::size_t i = 0; i < primary.size(); ++i) {
+        const hit& h = primary_hits[i];
+        if (!h.found()) continue;
+        // The hit point from the barycentrics (more accurate than org + t dir), and the geometric normal
+        // turned towards where the ray came from.
+        const auto tri = s.mesh.triangle(h.prim);
+        const vec3 p = (1.0f - h.u - h.v) * tri[0] + h.u * tri[1] + h.v * tri[2];
+        vec3 n = glm::cross(tri[1] - tri[0], tri[2] - tri[0]);
+        const float len = glm::length(n);
+        n = len > 0.0f ? n / len : -glm::normalize(primary[i].dir);
+        if (glm::dot(n, primary[i].dir) > 0.0f) n = -n;
+        if (kind == ray_kind::diffuse) {
+            const vec3 local = sample_cosine_hemisphere(vec2(rng.next_float(), rng.next_float()));
+            rays.push_back(ch01::spawn_ray(p, n, frame(n).to_world(local)));
+        } else {
+            rays.push_back(ch01::shadow_ray(p, n, s.lights.front().position));
+        }
+    }
+    return rays;
+}
+
+namespace {
+// Calls f(begin, end) on consecutive chunks of [0, n) on `threads` threads; chunks start at multiples of
+// the structure's batch alignment (whole 4x2 tile rows for packet tracers).
+template <class F>
+void for_chunks(const accel& a, std::size_t n, int threads, F&& f) {
+    if (threads <= 1) return f(std::size_t(0), n);
+    const std::size_t align = std::max<std::size_t>(1, a.batch_alignment());
+    const std::size_t chunk = (std::max<std::size_t>(1024, align) + align - 1) / align * align;
+    const thread_limit limit(threads);
+    parallel_for_chunks((n + chunk - 1) / chunk, 1, [&](std::size_t b, std::size_t e) {
+        for (std::size_t c = b; c < e; ++c) f(c * chunk, std::min(n, (c + 1) * chunk));
+    });
+}
+}  // namespace
+
+void trace_closest(const accel& a, std::span<const ray> rays, std::span<hit> hits, int threads) {
+    for_chunks(a, rays.size(), threads, [&](std::size_t b, std::size_t e) {
+        a.intersect(rays.subspan(b, e - b), hits.subspan(b, e - b));
+    });
+}
+
+void trace_any(const accel& a, std::span<const ray> rays, std::span<std::uint8_t> blocked, int threads) {
+    for_chunks(a, rays.size(), threads, [&](std::size_t b, std::size_t e) {
+        a.occluded(rays.subspan(b, e - b), blocked.subspan(b, e - b));
+    });
+}
+
+std::vector<ray> make_rays(ray_kind kind, const scene& s, int width, int height, std::uint64_t seed,
+                           const accel& exact, int threads) {
+    std::vector<ray> primary = primary_rays(s, width, height);
+    if (kind == ray_kind::primary) return primary;
+    std::vector<hit> hits(primary.size());
+    trace_closest(exact, primary, hits, threads);
+    return secondary_rays(kind, s, primary, hits, seed);
+}
+
+}  // namespace strahl::race

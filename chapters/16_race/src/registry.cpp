@@ -1,0 +1,40 @@
+#include "strahl/race/registry.hpp"
+#include "strahl/race/brute_force.hpp"
+#include "strahl/race/embree_accel.hpp"
+#include "strahl/race/oo_tracer.hpp"
+#include <stdexcept>
+
+namespace strahl::race {
+
+std::vector<accel_entry> registered_accels(const registry_options& o) {
+    std::vector<accel_entry> list = {
+        {"brute", "16", "brute force: every triangle, chapter 01's triangle test (the reference)",
+         [] { return std::make_unique<brute_force>(); }, true},
+        {"ch01-virtual", "01", "chapter 01's object-oriented tracer: a virtual call per triangle, brute force",
+         [] { return make_oo_tracer(); }, true},
+        // Later chapters register here, one line each, e.g.
+        // {"ch04-median", "04", "BVH, object median split", [] { return ch04::make_median_bvh(); }},
+    };
+    if (embree_available()) {
+        using q = embree_config::quality;
+        list.push_back({"embree-medium", "--", "Embree 3, medium build quality, rtcIntersect1/rtcOccluded1",
+                        [o] { return make_embree_accel({q::medium, 0, o.threads}); }});
+        list.push_back({"embree-high", "--", "Embree 3, high build quality (spatial splits), rtcIntersect1/rtcOccluded1",
+                        [o] { return make_embree_accel({q::high, 0, o.threads}); }});
+        if (o.packet_width > 0)
+            list.push_back({"embree-medium-packet8", "--", "Embree 3, medium quality, rtcIntersect8 on 4x2 pixel tiles",
+                            [o] { return make_embree_accel({q::medium, o.packet_width, o.threads}); }});
+    }
+    return list;
+}
+
+accel_entry find_accel(const std::string& name, const registry_options& options) {
+    std::string names;
+    for (accel_entry& e : registered_accels(options)) {
+        if (e.name == name) return e;
+        names += (names.empty() ? "" : ", ") + e.name;
+    }
+    throw std::invalid_argument("no structure named '" + name + "' (have: " + names + ")");
+}
+
+}  // namespace strahl::race

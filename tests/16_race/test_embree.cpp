@@ -1,0 +1,158 @@
+// Embree, the race's baseline and independent oracle: its medium and high quality builds find the same
+// primitive as brute force on all but a handful of rays (its own triangle test rounds differently), and its
+// 4x2-packet path gives the same primitives as its single-ray path. The counts go to the log (WARN).
+#include "strahl/procedural.hpp"
+#include "strahl/race/brute_force.hpp"
+#include "strahl/race/embree_accel.hpp"
+#include "strahl/race/measure.hpp"
+#include "strahl/race/ray_sets.hpp"
+#include "strahl/race/registry.hpp"
+#include "reference.hpp"
+#include "test_support.hpp"
+#include <catch2/catch.hpp>
+
+using namespace strahl;
+using namespace strahl::race;
+
+namespace {
+
+std::unique_ptr<accel> make_built(const std::string& name, const scene& s, const registry_options& o = {}) {
+    std::unique_ptr<accel> a = find_accel(name, o).make();
+    a->build(s);
+    return a;
+}
+
+// Compares embree-medium and embree-high with brute force on the three ray sets of s; at most
+// `allowed_percent` of each set's rays may differ (closest: a different primitive or hit/miss; any: the
+// other answer).
+void check_embree(const scene& s, int width, int height, double allowed_percent) {
+    const std::vector<test::reference_set>& sets = test::shared_reference_sets(s, width, height);
+    for (const char* name : {"embree-medium", "embree-high"}) {
+        const std::unique_ptr<accel> a = make_built(name, s);
+        CHECK(a->name() == name);
+        CHECK_FALSE(a->exact());
+        for (const test::reference_set& r : sets) {
+            REQUIRE(!r.rays.empty());
+            std::vector<hit> got(r.rays.size());
+            std::vector<std::uint8_t> got_any(r.rays.size(), 7);
+            test::closest_in_parallel(*a, r.rays, got);
+            test::any_in_parallel(*a, r.rays, got_any);
+            std::size_t closest_diff = 0, any_diff = 0, hits = 0, blocked = 0;
+            for (std::size_t i = 0; i < r.rays.size(); ++i) {
+                closest_diff += !agrees(got[i], r.closest[i], false);
+                any_diff += got_any[i] != r.any[i];
+                hits += r.closest[i].found();
+                blocked += r.any[i];
+            }
+            WARN("embree vs brute force: " << s.name << ", " << name << ", " << to_string(r.kind) << " rays: "
+                 << closest_diff << " of " << r.rays.size() << " closest hits and " << any_diff
+                 << " any hits differ (brute force: " << hits << " hits, " << blocked << " blocked)");
+            const double allowed = allowed_percent / 100.0 * double(r.rays.size());
+            CHECK(double(closest_diff) <= allowed);
+            CHECK(double(any_diff) <= allowed);
+            if (r.kind == ray_kind::primary) CHECK(hits > 0);
+        }
+    }
+}
+
+}  // namespace
+
+TEST_CASE("ch16 embree: available where found, refused clearly where not", "[ch16][embree]") {
+    bool listed = false;
+    for (const accel_entry& e : registered_accels()) listed = listed || e.name == "embree-medium";
+    CHECK(listed == embree_available());
+    if (!embree_available()) {
+        CHECK_THROWS_WITH(make_embree_accel({}), Catch::Contains("Embree"));
+        WARN("skipped: this build has no Embree 3");
+    }
+}
+
+TEST_CASE("ch16 embree: agrees with brute force on the teapot but for a handful of rays", "[ch16][embree]") {
+    if (!embree_available()) {
+        WARN("skipped: this build has no Embree 3");
+        return;
+    }
+    check_embree(builtin_scene("teapot"), 48, 36, 1.0);
+}
+
+TEST_CASE("ch16 embree: agrees with brute force on a random soup but for a handful of rays", "[ch16][embree]") {
+    if (!embree_available()) {
+        WARN("skipped: this build has no Embree 3");
+        return;
+    }
+    check_embree(builtin_scene("soup"), 48, 36, 1.0);
+}
+
+TEST_CASE("ch16 embree: agrees with brute force on the teapot in a stadium", "[ch16][embree]") {
+    if (!embree_available()) {
+        WARN("skipped: this build has no Embree 3");
+        return;
+    }
+    check_embree(builtin_scene("teapot_stadium"), 48, 36, 1.0);
+}
+
+TEST_CASE("ch16 embree: agrees with brute force on the bunny", "[ch16][embree]") {
+    if (!embree_available()) {
+        WARN("skipped: this build has no Embree 3");
+        return;
+    }
+    const std::filesystem::path file = test::shared_scene("bunny.ply");
+    if (file.empty()) {
+        WARN("skipped: ../shared/scenes/bunny.ply is not beside this clone");
+        return;
+    }
+    check_embree(load_scene(file), 32, 24, 1.0);
+}
+
+TEST_CASE("ch16 embree: an empty scene misses everything", "[ch16][embree]") {
+    if (!embree_available()) {
+        WARN("skipped: this build has no Embree 3");
+        return;
+    }
+    scene empty;
+    empty.name = "empty";
+    const std::vector<ray> rays = primary_rays(builtin_scene("teapot"), 8, 6);
+    for (const char* name : {"embree-medium", "embree-high"}) {
+        INFO(name);
+        const std::unique_ptr<accel> a = make_built(name, empty);
+        std::vector<hit> hits(rays.size());
+        std::vector<std::uint8_t> blocked(rays.size(), 7);
+        a->intersect(rays, hits);
+        a->occluded(rays, blocked);
+        for (std::size_t i = 0; i < rays.size(); ++i) {
+            CHECK_FALSE(hits[i].found());
+            CHECK(blocked[i] == 0);
+        }
+    }
+}
+
+TEST_CASE("ch16 embree: 4x2 packets give the single-ray path's primitives on primary rays", "[ch16][embree]") {
+    if (!embree_available()) {
+        WARN("skipped: this build has no Embree 3");
+        return;
+    }
+    for (const char* scene_name : {"teapot", "soup", "teapot_stadium"}) {
+        const scene s = builtin_scene(scene_name);
+        const int width = 48, height = 36;
+        const registry_options packets{1, width};
+        const std::unique_ptr<accel> single = make_built("embree-medium", s);
+        const std::unique_ptr<accel> packet = make_built("embree-medium-packet8", s, packets);
+        CHECK(packet->name() == "embree-medium-packet8");
+        const std::vector<ray> rays = primary_rays(s, width, height);
+        std::vector<hit> one(rays.size()), eight(rays.size(), hit{-1.0f, 12345u, 0.0f, 0.0f, invalid_id});
+        single->intersect(rays, one);
+        packet->intersect(rays, eight);
+        std::size_t differ = 0, hits = 0;
+        for (std::size_t i = 0; i < rays.size(); ++i) {
+            hits += one[i].found();
+            if (one[i].prim != eight[i].prim && differ++ < 5)
+                UNSCOPED_INFO(scene_name << ": pixel " << i % width << ", " << i / width << ": single ray prim "
+                                         << one[i].prim << ", packet prim " << eight[i].prim);
+        }
+        INFO(scene_name << ": " << differ << " of " << rays.size() << " primary rays differ");
+        CHECK(hits > 0);
+        CHECK(differ == 0);
+    }
+    // Without a packet width, there is no packet entry.
+    for (const accel_entry& e : registered_accels()) CHECK(e.name != "embree-medium-packet8");
+}
