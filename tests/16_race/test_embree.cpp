@@ -61,6 +61,8 @@ TEST_CASE("ch16 embree: available where found, refused clearly where not", "[ch1
     bool listed = false;
     for (const accel_entry& e : registered_accels()) listed = listed || e.name == "embree-medium";
     CHECK(listed == embree_available());
+    // The race has Embree exactly when CMake found it: a build that lost the flag fails here, not silently.
+    CHECK(embree_available() == bool(STRAHL_EMBREE_FOUND));
     if (!embree_available()) {
         CHECK_THROWS_WITH(make_embree_accel({}), Catch::Contains("Embree"));
         WARN("skipped: this build has no Embree 3");
