@@ -112,7 +112,8 @@ int run(int argc, const char* const* argv) {
         const std::vector<ray> primary = primary_rays(s, w, h);
         std::vector<hit> primary_hits(primary.size());
         trace_closest(exact, primary, primary_hits, ref_threads);
-        write_image(out / (scene_name + ".png"), primary_image(s, primary, primary_hits, w, h));
+        write_image(out / (std::filesystem::path(scene_name).stem().string() + ".png"),
+                    primary_image(s, primary, primary_hits, w, h));
 
         for (ray_kind kind : kinds) {
             const std::vector<ray> rays = kind == ray_kind::primary ? primary

@@ -1,29 +1,21 @@
 #include "strahl/race/brute_force.hpp"
-#include "strahl/ch01/shapes.hpp"
 
 namespace strahl::race {
 
-void brute_force::build(const scene& s) {
-    triangles_.resize(s.mesh.triangle_count());
-    for (std::size_t i = 0; i < triangles_.size(); ++i) triangles_[i] = s.mesh.triangle(i);
-}
+void brute_force::build(const scene& s) { triangles_ = std::make_unique<ch01::triangle_set>(s.mesh); }
 
 template <class Stats>
 void brute_force::closest(std::span<const ray> rays, std::span<hit> hits, Stats& stats) const {
+    const auto n = std::uint32_t(triangles_->size());
     for (std::size_t i = 0; i < rays.size(); ++i) {
         ray r = rays[i];
         hit best;
         stats.ray();
-        for (std::size_t k = 0; k < triangles_.size(); ++k) {
+        // Every triangle in id order; each hit shrinks r.tmax (record_closest), and at equal t the lower id
+        // stays: the rule of closer() that every other structure must reproduce.
+        for (std::uint32_t k = 0; k < n; ++k) {
             stats.prim_test();
-            float t, u, v;
-            const auto& tri = triangles_[k];
-            // Triangles come in id order and tmax shrinks to each hit, so a later triangle at the same t is
-            // rejected: the lower id wins ties, as closer() demands.
-            if (ch01::intersect_triangle(r, tri[0], tri[1], tri[2], t, u, v)) {
-                best = hit{t, std::uint32_t(k), u, v, invalid_id};
-                r.tmax = t;
-            }
+            triangles_->intersect(k, r, best);
         }
         hits[i] = best;
     }
@@ -31,14 +23,13 @@ void brute_force::closest(std::span<const ray> rays, std::span<hit> hits, Stats&
 
 template <class Stats>
 void brute_force::any(std::span<const ray> rays, std::span<std::uint8_t> blocked, Stats& stats) const {
+    const auto n = std::uint32_t(triangles_->size());
     for (std::size_t i = 0; i < rays.size(); ++i) {
         stats.ray();
         std::uint8_t found = 0;
-        for (std::size_t k = 0; k < triangles_.size() && !found; ++k) {
+        for (std::uint32_t k = 0; k < n && !found; ++k) {
             stats.prim_test();
-            float t, u, v;
-            const auto& tri = triangles_[k];
-            found = ch01::intersect_triangle(rays[i], tri[0], tri[1], tri[2], t, u, v) ? 1 : 0;
+            found = triangles_->occludes(k, rays[i]) ? 1 : 0;
         }
         blocked[i] = found;
     }

@@ -3,9 +3,8 @@
 // exactly what it returns, hit for hit, bit for bit, on the same rays.
 #pragma once
 #include "strahl/accel.hpp"
-#include <array>
+#include "strahl/ch01/primitive_sets.hpp"
 #include <memory>
-#include <vector>
 
 namespace strahl::race {
 
@@ -18,7 +17,7 @@ public:
     std::optional<counter_values> intersect_counted(std::span<const ray> rays, std::span<hit> hits) const override;
     std::optional<counter_values> occluded_counted(std::span<const ray> rays,
                                                    std::span<std::uint8_t> blocked) const override;
-    std::size_t memory_bytes() const override { return triangles_.size() * sizeof(triangles_[0]); }
+    std::size_t memory_bytes() const override { return triangles_->memory_bytes(); }
 
 private:
     template <class Stats>
@@ -26,7 +25,8 @@ private:
     template <class Stats>
     void any(std::span<const ray> rays, std::span<std::uint8_t> blocked, Stats& stats) const;
 
-    std::vector<std::array<vec3, 3>> triangles_;  // the mesh's triangles in id order, vertices copied
+    // The mesh's triangles in id order (none before build(): every ray misses).
+    std::unique_ptr<ch01::triangle_set> triangles_ = std::make_unique<ch01::triangle_set>(triangle_mesh{});
 };
 
 }  // namespace strahl::race
