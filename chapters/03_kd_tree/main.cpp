@@ -1,0 +1,188 @@
+// ch03: the k-d tree. Builds chapter 03's SAH k-d tree over the teapot, the teapot in a stadium and the
+// shared bunny (Sponza with --sponza) for both primitive sets, renders primary rays through it (shaded by
+// facing ratio), draws the first levels' split planes over the render, and prints per set: nodes, leaves,
+// depth, references per triangle, memory, build time, SAH cost, nodes and triangles tested per ray, Mrays/s.
+#include "strahl/ch03/accel.hpp"
+#include "strahl/display.hpp"
+#include "strahl/image.hpp"
+#include "strahl/parallel.hpp"
+#include "strahl/procedural.hpp"
+#include "strahl/program.hpp"
+#include "strahl/progress.hpp"
+#include "strahl/timer.hpp"
+#include <cstdio>
+#include <iostream>
+#include <mutex>
+
+#ifndef STRAHL_TRACK
+#define STRAHL_TRACK "solutions"
+#endif
+
+namespace {
+
+using namespace strahl;
+using namespace strahl::ch03;
+namespace fs = std::filesystem;
+
+struct options {
+    int width, height, levels;
+    fs::path folder{"out/03_kd_tree"};
+    bool user_named = false, force = false;
+};
+
+struct primary_run {
+    std::vector<hit> hits;
+    double seconds = 0.0;
+    counter_values counts;
+};
+
+// Primary rays through every pixel centre: timed without counters (all threads), then counted.
+primary_run trace_primary(const accel& a, const camera& cam, const std::string& label) {
+    const int w = cam.width(), h = cam.height();
+    std::vector<ray> rays(std::size_t(w) * h);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) rays[std::size_t(y) * w + x] = cam.pixel_ray(x, y);
+    primary_run run;
+    run.hits.resize(rays.size());
+    {
+        progress_bar bar(label, std::uint64_t(h), "rows");
+        const timer clock;
+        parallel_for_chunks(std::size_t(h), 4, [&](std::size_t y0, std::size_t y1) {
+            const std::size_t b = y0 * w, n = (y1 - y0) * w;
+            a.intersect(std::span(rays).subspan(b, n), std::span(run.hits).subspan(b, n));
+            bar.add(y1 - y0);
+        });
+        run.seconds = clock.seconds();
+        bar.finish();
+    }
+    std::mutex m;
+    std::vector<hit> counted(rays.size());
+    parallel_for_chunks(std::size_t(h), 4, [&](std::size_t y0, std::size_t y1) {
+        const std::size_t b = y0 * w, n = (y1 - y0) * w;
+        const auto c = a.intersect_counted(std::span(rays).subspan(b, n), std::span(counted).subspan(b, n));
+        const std::lock_guard lock(m);
+        if (c) run.counts += *c;
+    });
+    return run;
+}
+
+// Facing-ratio shading: |cos| between the ray and the triangle's normal; background dark blue.
+image shade(const scene& s, const camera& cam, const std::vector<hit>& hits) {
+    image img(cam.width(), cam.height(), color(0.05f, 0.07f, 0.12f));
+    for (int y = 0; y < cam.height(); ++y)
+        for (int x = 0; x < cam.width(); ++x) {
+            const hit& h = hits[std::size_t(y) * cam.width() + x];
+            if (!h.found()) continue;
+            const auto t = s.mesh.triangle(h.prim);
+            const vec3 n = glm::cross(t[1] - t[0], t[2] - t[0]);
+            const vec3 d = cam.pixel_ray(x, y).dir;
+            const float f = std::abs(glm::dot(n, d)) / std::max(1e-30f, glm::length(n) * glm::length(d));
+            img.at(x, y) = color(0.15f + 0.8f * f);
+        }
+    return img;
+}
+
+// The split planes of the first levels as rectangles clipped to their node boxes, coloured by level.
+std::vector<line_segment> plane_lines(const kd_tree& tree, int levels) {
+    static const color palette[] = {{1.0f, 0.15f, 0.1f}, {1.0f, 0.6f, 0.0f}, {1.0f, 1.0f, 0.1f},
+                                    {0.2f, 1.0f, 0.3f}, {0.2f, 0.8f, 1.0f}, {0.7f, 0.4f, 1.0f}};
+    std::vector<line_segment> lines;
+    for (const kd_plane& p : split_planes(tree, levels))
+        for (int k = 0; k < 4; ++k)
+            lines.push_back({p.corners[k], p.corners[(k + 1) % 4], palette[std::min(p.level, 5)]});
+    return lines;
+}
+
+void run_scene(const scene& s, const options& o) {
+    const camera cam(s.camera, o.width, o.height);
+    const fs::path render_path = o.folder / (s.name + ".png"), planes_path = o.folder / (s.name + "_planes.png");
+    prepare_output(render_path, o.user_named, o.force);
+    prepare_output(planes_path, o.user_named, o.force);
+    std::printf("%s: %zu triangles, %d x %d primary rays\n", s.name.c_str(), s.mesh.triangle_count(), o.width,
+                o.height);
+    std::printf("  %-9s %8s %8s %5s %9s %9s %9s %6s %10s %10s %8s\n", "set", "nodes", "leaves", "depth",
+                "refs/tri", "memory", "build ms", "SAH", "nodes/ray", "tris/ray", "Mrays/s");
+    for (const bool is_virtual : {false, true}) {
+        const auto a = make_kd_accel(is_virtual);
+        a->build(s);
+        const kd_tree& t = a->tree();
+        const primary_run r = trace_primary(*a, cam, s.name + (is_virtual ? " virtual" : " triangles"));
+        const double rays = double(r.hits.size());
+        std::printf("  %-9s %8zu %8zu %5d %9.2f %8.1fK %9.1f %6.1f %10.1f %10.1f %8.2f\n",
+                    is_virtual ? "virtual" : "triangles", t.nodes.size(), t.stats.leaves, t.stats.depth,
+                    t.stats.refs_per_prim(), double(t.memory_bytes()) / 1024.0, t.stats.build_ms, t.sah_cost(),
+                    r.counts.per_ray(r.counts.nodes_visited), r.counts.per_ray(r.counts.prim_tests),
+                    rays / r.seconds * 1e-6);
+        if (is_virtual) continue;
+        // The picture: the render, then the same with the first levels' planes drawn over it.
+        image img = shade(s, cam, r.hits);
+        write_image(render_path, img);
+        draw_lines(img, cam, plane_lines(t, o.levels), 1.0f);
+        write_image(planes_path, img);
+        std::printf("  tree     %zu inner nodes, %zu empty leaves, largest leaf %zu, depth limit %d; "
+                    "memory: nodes + references only (the triangles are the set's)\n",
+                    t.stats.inner, t.stats.empty_leaves, t.stats.max_leaf, t.stats.depth_limit);
+    }
+    std::printf("  wrote    %s, %s\n", render_path.string().c_str(), planes_path.string().c_str());
+}
+
+int run(int argc, const char* const* argv) {
+    cli args("ch03", "Chapter 03, the k-d tree (" STRAHL_TRACK "): SAH k-d trees over plain triangles and "
+             "virtual objects, primary rays through them, tree statistics and the split planes drawn.");
+    args.option("scene", "NAME", "all", "teapot, stadium, bunny, sponza or all (all: teapot, stadium, bunny; "
+                                        "Sponza only with --sponza)")
+        .option("width", "N", "", "image width (default 640, 320 with --quick)")
+        .option("height", "N", "", "image height (default 3/4 of the width)")
+        .option("levels", "N", "4", "draw the split planes of this many levels")
+        .option("threads", "N", "0", "worker threads (0: one per core)")
+        .option("out", "DIR", "", "write the images into DIR/ (default out/03_kd_tree/)")
+        .flag("force", "replace existing files in a folder named with --out")
+        .flag("sponza", "with --scene all: also Sponza (262k triangles, a build of seconds)")
+        .flag("quick", "smaller images and only the built-in scenes");
+    if (!args.parse(argc, argv)) return 0;
+    const bool quick = args.has("quick");
+    const int threads = args.get_int("threads");
+    if (threads < 0) throw usage_error("--threads must be 0 (all cores) or more");
+    const thread_limit limit(threads);
+    options o;
+    o.width = args.has("width") ? args.get_int("width") : (quick ? 320 : 640);
+    o.height = args.has("height") ? args.get_int("height") : o.width * 3 / 4;
+    o.levels = args.get_int("levels");
+    if (o.width < 1 || o.width > 16384 || o.height < 1 || o.height > 16384)
+        throw usage_error("--width and --height must lie in [1, 16384]");
+    if (o.levels < 0 || o.levels > 12) throw usage_error("--levels must lie in [0, 12]");
+    if (args.has("out")) {
+        o.folder = args.get("out");
+        o.user_named = true;
+    }
+    o.force = args.has("force");
+
+    const std::string which = args.get("scene");
+    if (which != "all" && which != "teapot" && which != "stadium" && which != "bunny" && which != "sponza")
+        throw usage_error("--scene must be teapot, stadium, bunny, sponza or all, not '" + which + "'");
+    const auto shared = [&](const char* file, const char* name) {
+        const fs::path p = fs::path(STRAHL_SHARED_SCENES) / file;
+        std::error_code ec;
+        if (!fs::exists(p, ec)) {
+            std::printf("%s: skipped, %s is not there (the course's shared meshes)\n", name, p.string().c_str());
+            return;
+        }
+        scene s = load_scene(p);
+        s.name = name;
+        run_scene(s, o);
+    };
+    if (which == "all" || which == "teapot") run_scene(builtin_scene("teapot"), o);
+    if (which == "all" || which == "stadium") run_scene(builtin_scene("teapot_stadium"), o);
+    if ((which == "all" && !quick) || which == "bunny") shared("bunny.ply", "bunny");
+    if ((which == "all" && args.has("sponza") && !quick) || which == "sponza") shared("sponza.obj", "sponza");
+    std::printf("against the uniform grid (chapter 02) and Embree, on the same rays:\n"
+                "  build/release/bin/race --quick --accels brute,ch02-grid,ch03-kd,ch03-kd-virtual,embree-medium\n");
+    return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    const bool exercises = std::string(STRAHL_TRACK) == "exercises";
+    return guarded_main(exercises ? "ch03_exercise" : "ch03", run, argc, argv);
+}

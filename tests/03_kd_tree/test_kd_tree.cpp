@@ -1,0 +1,156 @@
+// Chapter 03 beyond the exercises (0 points): the k-d tree must give brute force's answers bit for bit
+// on scenes and rays made to break it, and build bounded trees on degenerate input.
+#include "strahl/ch01/primitive_sets.hpp"
+#include "strahl/ch03/accel.hpp"
+#include "strahl/procedural.hpp"
+#include "strahl/rng.hpp"
+#include <catch2/catch.hpp>
+#include <cstring>
+#include <limits>
+
+using namespace strahl;
+using namespace strahl::ch03;
+
+namespace {
+
+scene mesh_only(triangle_mesh m) {
+    scene s;
+    s.name = "test";
+    s.mesh = std::move(m);
+    return s;
+}
+
+triangle_mesh copies(std::size_t n, vec3 a, vec3 b, vec3 c) {
+    triangle_mesh m;
+    m.positions = {a, b, c};
+    for (std::size_t i = 0; i < n; ++i) m.indices.push_back(uvec3(0, 1, 2));
+    return m;
+}
+
+// Rays made to break a k-d tree: from inside the box, along each axis with +0 and -0 in the other
+// components, lying in and starting on the tree's split planes, and NaN.
+std::vector<ray> nasty_rays(const kd_tree& t, std::size_t n, std::uint64_t seed) {
+    pcg32 g(seed);
+    const aabb b = t.bounds.is_empty() ? aabb{vec3(-1), vec3(1)} : t.bounds;
+    const vec3 lo = b.min - 0.1f * (b.extent() + 0.1f), hi = b.max + 0.1f * (b.extent() + 0.1f);
+    const auto point = [&] { return lo + vec3(g.next_float(), g.next_float(), g.next_float()) * (hi - lo); };
+    const auto dir = [&] { return vec3(g.next_float(), g.next_float(), g.next_float()) * 2.0f - 1.0f; };
+    std::vector<ray> rays;
+    for (std::size_t i = 0; i < n; ++i) rays.push_back({point(), dir()});
+    for (int a = 0; a < 3; ++a)
+        for (const float s : {1.0f, -1.0f})
+            for (const float z : {0.0f, -0.0f})
+                for (std::size_t i = 0; i < n / 8; ++i) {
+                    vec3 d(z);
+                    d[a] = s;
+                    rays.push_back({point(), d});
+                }
+    for (const kd_plane& p : split_planes(t, 6)) {
+        const vec3 c = 0.5f * (p.corners[0] + p.corners[2]);
+        vec3 in_plane = dir();
+        in_plane[p.axis] = 0.0f;
+        vec3 o = point();
+        o[p.axis] = c[p.axis];
+        rays.push_back({o, in_plane});             // in the plane
+        rays.push_back({o, dir()});                // starting on it
+        rays.push_back({c, dir(), -1.0f, inf});   // through the middle of the rectangle, both ways
+    }
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    rays.push_back({vec3(nan), vec3(0, 0, 1)});
+    rays.push_back({point(), vec3(nan, 0, 1)});
+    rays.push_back({point(), vec3(0.0f)});
+    return rays;
+}
+
+bool same(const hit& a, const hit& b) {
+    return a.prim == b.prim && std::memcmp(&a.t, &b.t, 4) == 0 && std::memcmp(&a.u, &b.u, 4) == 0 &&
+           std::memcmp(&a.v, &b.v, 4) == 0;
+}
+
+// Checks both primitive sets against brute force over triangle_set, closest and any hit, counted too.
+void check_exact(const scene& s, std::size_t n_rays) {
+    const ch01::triangle_set tris(s.mesh);
+    for (const bool is_virtual : {false, true}) {
+        const auto a = make_kd_accel(is_virtual);
+        a->build(s);
+        INFO(a->name() << " on " << s.mesh.triangle_count() << " triangles");
+        const std::vector<ray> rays = nasty_rays(a->tree(), n_rays, 7);
+        std::vector<hit> got(rays.size()), got_counted(rays.size());
+        std::vector<std::uint8_t> blocked(rays.size()), blocked_counted(rays.size());
+        a->intersect(rays, got);
+        a->occluded(rays, blocked);
+        const auto counts = a->intersect_counted(rays, got_counted);
+        a->occluded_counted(rays, blocked_counted);
+        REQUIRE(counts);
+        CHECK(counts->rays == rays.size());
+        std::size_t wrong = 0;
+        for (std::size_t i = 0; i < rays.size(); ++i) {
+            ray r = rays[i];
+            hit ref;
+            bool any = false;
+            for (std::uint32_t k = 0; k < tris.size(); ++k) {
+                tris.intersect(k, r, ref);
+                any = any || tris.occludes(k, rays[i]);
+            }
+            const bool ok = same(got[i], ref) && same(got_counted[i], ref) && (blocked[i] != 0) == any &&
+                            blocked_counted[i] == blocked[i];
+            if (!ok && ++wrong <= 3) FAIL_CHECK("ray " << i << ": t " << got[i].t << " prim " << got[i].prim
+                                                       << ", brute force t " << ref.t << " prim " << ref.prim);
+        }
+        CHECK(wrong == 0);
+    }
+}
+
+}  // namespace
+
+TEST_CASE("ch03 k-d tree: both primitive sets equal brute force on the teapot", "[ch03][adversarial]") {
+    check_exact(teapot_scene(4), 2000);
+}
+
+TEST_CASE("ch03 k-d tree: a random soup and all triangles in one place", "[ch03][adversarial]") {
+    check_exact(mesh_only(random_soup(2000, 3, 0.1f)), 2000);
+    triangle_mesh clump = random_soup(500, 4, 0.01f);
+    for (vec3& p : clump.positions) p = 0.001f * p;  // everything within a thousandth of the origin
+    check_exact(mesh_only(clump), 1000);
+}
+
+TEST_CASE("ch03 k-d tree: a flat scene, one triangle, an empty scene", "[ch03][adversarial]") {
+    triangle_mesh flat = random_soup(1000, 5, 0.1f);
+    for (vec3& p : flat.positions) p.z = 0.5f;  // zero extent on z: every triangle planar
+    check_exact(mesh_only(flat), 2000);
+    check_exact(mesh_only(copies(1, vec3(0, 0, 0), vec3(1, 0, 0), vec3(0, 1, 0))), 500);
+    check_exact(mesh_only(triangle_mesh{}), 100);
+}
+
+TEST_CASE("ch03 k-d tree: thousands of identical triangles terminate with bounded depth", "[ch03][adversarial]") {
+    const scene s = mesh_only(copies(3000, vec3(0, 0, 0), vec3(1, 0, 0), vec3(0, 1, 0)));
+    const auto a = make_kd_accel(false);
+    a->build(s);
+    const kd_stats& st = a->tree().stats;
+    CHECK(st.depth <= st.depth_limit);
+    CHECK(st.depth_limit <= kd_max_depth);
+    CHECK(st.references <= 3000 * std::size_t(st.leaves));
+    // Ties: the lowest id wins, as with brute force.
+    std::vector<ray> rays = {ray{vec3(0.2f, 0.2f, 1.0f), vec3(0, 0, -1)}};
+    std::vector<hit> h(1);
+    a->intersect(rays, h);
+    CHECK(h[0].prim == 0u);
+    check_exact(s, 300);
+}
+
+TEST_CASE("ch03 k-d tree: the SAH cost of a hand-made tree", "[ch03][adversarial]") {
+    // Root [0, 4] x [0, 1] x [0, 1] (area 18) split at x = 1: a leaf of 2 (area 6) and a leaf of 1 (area 14).
+    kd_tree t;
+    t.bounds = aabb{vec3(0), vec3(4, 1, 1)};
+    t.sah = sah_params{1.0f, 1.5f, 0.2f};
+    t.nodes = {kd_node::inner(0, 1.0f, 1), kd_node::leaf(0, 2), kd_node::leaf(2, 1)};
+    t.prim_refs = {0, 1, 2};
+    t.stats.references = 3;
+    CHECK(t.sah_cost() == Approx((18.0 + 1.5 * 2 * 6 + 1.5 * 1 * 14) / 18.0));
+    CHECK(t.memory_bytes() == 3 * 8 + 3 * 4);
+    CHECK(t.nodes[0].axis() == 0);
+    CHECK(t.nodes[0].left() == 1u);
+    CHECK(t.nodes[2].is_leaf());
+    CHECK(t.nodes[2].count == 1u);
+    CHECK(t.nodes[2].first() == 2u);
+}
