@@ -1,0 +1,47 @@
+// Building chapter 02's uniform grid from boxes: the resolution heuristic and compact cell storage.
+// The heuristic: cells ~ lambda * N, as cube-ish as the box allows (J. Cleary and G. Wyvill, "Analysis of
+// an algorithm for fast ray tracing using uniform space subdivision", The Visual Computer, 1988; the
+// lambda form as in A. Fujimoto et al. and in Wald's and Havran's grid studies).
+#pragma once
+#include "strahl/ch02/grid.hpp"
+#include <cstdint>
+#include <functional>
+#include <span>
+#include <vector>
+
+namespace strahl::ch02 {
+
+struct grid_options {
+    float lambda = 4.0f;           // cells per triangle
+    int max_res = 1024;            // cells per axis at most
+    std::int64_t max_cells = 1 << 24;  // cells in all at most (16 M: 64 MB of offsets)
+    bool exact_overlap = false;    // insert a triangle only into cells the triangle itself overlaps
+};
+
+// The resolution heuristic: n_axis = extent_axis * cbrt(lambda N / volume), clamped to [1, max_res].
+// Axes of zero extent are widened first (a flat scene gets one cell, of non-zero size, on that axis).
+grid_dims choose_resolution(const aabb& scene_box, std::size_t n, const grid_options& opt);
+
+// The cells: prims[offsets[c] .. offsets[c+1]) are the primitives of cell c. One index array, no vector
+// per cell: built in two passes (count, prefix sum, fill).
+struct grid_cells {
+    std::vector<std::uint32_t> offsets;  // cell_count + 1 entries (empty for the empty grid)
+    std::vector<std::uint32_t> prims;
+};
+
+// Optional exact test: keep(i, cell_box) says whether primitive i truly overlaps the cell.
+using overlap_test = std::function<bool(std::uint32_t, const aabb&)>;
+
+grid_cells fill_cells(const grid_dims& g, std::span<const aabb> boxes, const overlap_test& keep = {});
+
+// Occupancy: what the chapter prints and plots.
+struct grid_stats {
+    std::size_t cells = 0, empty_cells = 0, references = 0, max_per_cell = 0;
+    double mean_per_cell = 0.0;        // over all cells
+    double mean_per_nonempty = 0.0;    // over the cells holding something
+    double references_per_prim = 0.0;
+    std::vector<std::size_t> histogram;  // histogram[k]: cells holding k primitives (last bin: k or more)
+};
+grid_stats occupancy(const grid_dims& g, const grid_cells& c, std::size_t prims, std::size_t bins = 16);
+
+}  // namespace strahl::ch02

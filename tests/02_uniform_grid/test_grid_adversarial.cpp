@@ -1,0 +1,194 @@
+// Chapter 02's grid against brute force on the cases that break grids (no points: they need every
+// exercise done). Every answer must equal brute force bit for bit: t, primitive id, u and v.
+#include "strahl/ch02/accel.hpp"
+#include "strahl/procedural.hpp"
+#include "strahl/rng.hpp"
+#include <catch2/catch.hpp>
+#include <bit>
+#include <cmath>
+
+using namespace strahl;
+using namespace strahl::ch02;
+
+namespace {
+
+constexpr float nan_f = std::numeric_limits<float>::quiet_NaN();
+
+hit brute_closest(const ch01::triangle_set& set, ray r) {
+    hit best;
+    for (std::uint32_t i = 0; i < set.size(); ++i) set.intersect(i, r, best);
+    return best;
+}
+bool brute_any(const ch01::triangle_set& set, const ray& r) {
+    for (std::uint32_t i = 0; i < set.size(); ++i)
+        if (set.occludes(i, r)) return true;
+    return false;
+}
+bool identical(const hit& a, const hit& b) {
+    return std::bit_cast<std::uint32_t>(a.t) == std::bit_cast<std::uint32_t>(b.t) && a.prim == b.prim &&
+           std::bit_cast<std::uint32_t>(a.u) == std::bit_cast<std::uint32_t>(b.u) &&
+           std::bit_cast<std::uint32_t>(a.v) == std::bit_cast<std::uint32_t>(b.v);
+}
+
+// Rays from around the scene towards random points of its box, some starting inside it, some with a short
+// tmax, and rays along the axes exactly on cell boundaries (with +0 and -0 components).
+std::vector<ray> rays_for(const triangle_mesh& mesh, const grid_dims& g, std::size_t n) {
+    std::vector<ray> rays;
+    aabb b = mesh.bounds();
+    if (b.is_empty()) b = aabb{vec3(-1), vec3(1)};
+    const vec3 c = b.centroid(), e = glm::max(b.extent(), vec3(1e-3f));
+    pcg32 rng(7);
+    const auto in_box = [&] { return b.min + vec3(rng.next_float(), rng.next_float(), rng.next_float()) * e; };
+    for (std::size_t i = 0; i < n; ++i) {
+        const vec3 target = in_box();
+        const vec3 org = i % 3 == 0 ? in_box() : c + 2.0f * e * (vec3(rng.next_float(), rng.next_float(), rng.next_float()) - 0.5f) * 2.0f;
+        ray r{org, target - org};
+        if (i % 7 == 0) r.tmax = rng.next_float() * 1.5f;
+        if (i % 11 == 0) r.tmin = rng.next_float() * 0.5f;
+        rays.push_back(r);
+    }
+    for (int k = 0; k <= g.res.x && k < 12; ++k)
+        for (int a = 0; a < 3; ++a) {
+            // On the k-th boundary of axis a, and on a boundary of axis (a+1)%3 too: along axis (a+2)%3.
+            vec3 org = c;
+            org[a] = g.box.min[a] + float(std::min(k, g.res[a])) * g.cell_size[a];
+            const int b1 = (a + 1) % 3, along = (a + 2) % 3;
+            org[b1] = g.box.min[b1] + float(g.res[b1] / 2) * g.cell_size[b1];
+            org[along] = g.box.min[along] - e[along];
+            vec3 d(0.0f);
+            d[along] = 1.0f;
+            d[a] = k % 2 ? -0.0f : 0.0f;
+            rays.push_back(ray{org, d});
+            org[along] = g.box.max[along] + e[along];
+            d[along] = -2.0f;
+            rays.push_back(ray{org, d});
+        }
+    return rays;
+}
+
+void check_against_brute_force(const scene& s, const grid_options& opt, std::size_t n = 600) {
+    const ch01::triangle_set set(s.mesh);
+    for (const bool virt : {false, true}) {
+        const auto acc = make_accel(virt, opt);
+        acc->build(s);
+        const grid_dims g = virt ? dynamic_cast<grid_accel<ch01::object_set>&>(*acc).grid().dims()
+                                 : dynamic_cast<grid_accel<ch01::triangle_set>&>(*acc).grid().dims();
+        std::vector<ray> rays = rays_for(s.mesh, g, n);
+        rays.push_back(ray{vec3(nan_f), vec3(1, 0, 0)});
+        rays.push_back(ray{vec3(0), vec3(nan_f, 1, 0)});
+        rays.push_back(ray{vec3(0), vec3(0.0f)});
+        rays.push_back(ray{vec3(0), vec3(1, 1, 1), 2.0f, 1.0f});
+        std::vector<hit> hits(rays.size()), counted(rays.size());
+        std::vector<std::uint8_t> blocked(rays.size());
+        acc->intersect(rays, hits);
+        acc->occluded(rays, blocked);
+        const auto c = acc->intersect_counted(rays, counted);
+        REQUIRE(c.has_value());
+        CHECK(c->rays == rays.size());
+        std::size_t wrong = 0, found = 0;
+        for (std::size_t i = 0; i < rays.size(); ++i) {
+            const hit want = brute_closest(set, rays[i]);
+            found += want.found();
+            if (!identical(hits[i], want) || !identical(counted[i], want) || (blocked[i] != 0) != brute_any(set, rays[i])) {
+                if (++wrong < 5) UNSCOPED_INFO("ray " << i << ": got t " << hits[i].t << " prim " << hits[i].prim
+                                                      << ", brute force t " << want.t << " prim " << want.prim);
+            }
+        }
+        INFO(s.name << ", " << (virt ? "virtual" : "triangles") << ", lambda " << opt.lambda << ", cells "
+                    << g.cell_count() << ", " << found << " of " << rays.size() << " rays hit");
+        CHECK(wrong == 0);
+        if (s.mesh.triangle_count() > 0 && rays.size() > 50) CHECK(found > 0);
+    }
+}
+
+scene from_mesh(const std::string& name, triangle_mesh m) { return mesh_scene(name, std::move(m)); }
+
+triangle_mesh flat_mesh() {  // a 10 x 10 patch of triangles in the plane z = 0.5
+    triangle_mesh m;
+    for (int j = 0; j <= 10; ++j)
+        for (int i = 0; i <= 10; ++i) m.positions.push_back(vec3(float(i) * 0.1f, float(j) * 0.1f, 0.5f));
+    for (std::uint32_t j = 0; j < 10; ++j)
+        for (std::uint32_t i = 0; i < 10; ++i) {
+            const std::uint32_t a = j * 11 + i;
+            m.indices.push_back(uvec3(a, a + 1, a + 12));
+            m.indices.push_back(uvec3(a, a + 12, a + 11));
+        }
+    return m;
+}
+
+}  // namespace
+
+TEST_CASE("ch02 grid: equals brute force on the teapot and a triangle soup, both primitive sets", "[ch02][adversarial]") {
+    check_against_brute_force(from_mesh("teapot", teapot_mesh(3)), {});
+    check_against_brute_force(from_mesh("soup", random_soup(800, 3, 0.1f)), {});
+    grid_options exact;
+    exact.exact_overlap = true;
+    check_against_brute_force(from_mesh("teapot exact", teapot_mesh(3)), exact);
+}
+
+TEST_CASE("ch02 grid: huge and tiny lambda, all triangles in one cell", "[ch02][adversarial]") {
+    for (const float lambda : {0.0001f, 0.5f, 64.0f}) {
+        grid_options opt;
+        opt.lambda = lambda;
+        check_against_brute_force(from_mesh("teapot", teapot_mesh(2)), opt, 300);
+    }
+    grid_options capped;
+    capped.lambda = 1e6f;
+    capped.max_cells = 200000;
+    check_against_brute_force(from_mesh("soup", random_soup(200, 5, 0.2f)), capped, 300);
+    // One cell holds everything.
+    const auto acc = make_accel(false, grid_options{0.0001f});
+    acc->build(from_mesh("teapot", teapot_mesh(2)));
+    CHECK(dynamic_cast<grid_accel<ch01::triangle_set>&>(*acc).grid().dims().cell_count() == 1);
+}
+
+TEST_CASE("ch02 grid: flat scene, one triangle, copies of one triangle, empty scene", "[ch02][adversarial]") {
+    check_against_brute_force(from_mesh("flat", flat_mesh()), {});
+    triangle_mesh one;
+    one.positions = {vec3(0, 0, 0), vec3(1, 0, 0), vec3(0, 1, 0)};
+    one.indices = {uvec3(0, 1, 2)};
+    check_against_brute_force(from_mesh("one", one), {});
+    triangle_mesh copies = one;
+    for (int i = 1; i < 300; ++i) copies.indices.push_back(uvec3(0, 1, 2));
+    check_against_brute_force(from_mesh("copies", copies), {}, 200);
+    // The flat axis gets one cell of non-zero size.
+    const auto acc = make_accel(false);
+    acc->build(from_mesh("flat", flat_mesh()));
+    const grid_dims g = dynamic_cast<grid_accel<ch01::triangle_set>&>(*acc).grid().dims();
+    CHECK(g.res.z == 1);
+    CHECK(g.cell_size.z > 0.0f);
+    CHECK(g.res.x > 1);
+    // Empty: no cells, every ray misses.
+    const auto none = make_accel(true);
+    none->build(scene{});
+    std::vector<ray> rays{ray{vec3(0), vec3(1, 0, 0)}, ray{vec3(nan_f), vec3(nan_f)}};
+    std::vector<hit> hits(2);
+    std::vector<std::uint8_t> blocked(2, 7);
+    none->intersect(rays, hits);
+    none->occluded(rays, blocked);
+    CHECK(!hits[0].found());
+    CHECK(!hits[1].found());
+    CHECK(blocked[0] == 0);
+    CHECK(blocked[1] == 0);
+}
+
+TEST_CASE("ch02 grid: cell storage holds every triangle in the cells of its box", "[ch02][adversarial]") {
+    const triangle_mesh m = teapot_mesh(2);
+    const ch01::triangle_set set(m);
+    uniform_grid grid;
+    grid_options opt;
+    grid.build(set, opt);
+    const grid_dims& g = grid.dims();
+    const grid_cells& c = grid.cells();
+    CHECK(double(g.cell_count()) == Approx(opt.lambda * double(m.triangle_count())).epsilon(0.5));
+    REQUIRE(c.offsets.size() == std::size_t(g.cell_count()) + 1);
+    CHECK(c.offsets.front() == 0);
+    CHECK(c.offsets.back() == c.prims.size());
+    CHECK(std::is_sorted(c.offsets.begin(), c.offsets.end()));
+    std::vector<int> seen(set.size(), 0);
+    for (std::uint32_t p : c.prims) ++seen[p];
+    CHECK(std::count(seen.begin(), seen.end(), 0) == 0);
+    const grid_stats s = occupancy(g, c, set.size());
+    CHECK(s.references == c.prims.size());
+    CHECK(s.references_per_prim >= 1.0);
+}
