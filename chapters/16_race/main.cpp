@@ -68,8 +68,8 @@ int run(int argc, const char* const* argv) {
         .option("accels", "LIST", "", "comma-separated structures (default: all; see strahl-trace --list)")
         .option("rays", "LIST", "primary,diffuse,shadow", "ray sets")
         .option("threads", "N", "1", "threads tracing (1: the single-thread table)")
-        .option("width", "W", "", "image width of the ray sets (default 256, quick 96)")
-        .option("height", "H", "", "image height (default 192, quick 72)")
+        .option("width", "W", "", "image width of the ray sets (default 192, quick 96)")
+        .option("height", "H", "", "image height (default 144, quick 72)")
         .option("repeats", "K", "5", "timed runs after a warm-up; the median is reported")
         .option("budget", "S", "", "seconds one query may take before repeats stop, at least one run (default 4, quick 2)")
         .option("out", "DIR", "out/16_race", "where the tables, plots and images go")
@@ -77,8 +77,8 @@ int run(int argc, const char* const* argv) {
     if (!args.parse(argc, argv)) return 0;
     const bool quick = args.has("quick");
     const int threads = args.get_int("threads");
-    const int w = args.has("width") ? args.get_int("width") : quick ? 96 : 256;
-    const int h = args.has("height") ? args.get_int("height") : quick ? 72 : 192;
+    const int w = args.has("width") ? args.get_int("width") : quick ? 96 : 192;
+    const int h = args.has("height") ? args.get_int("height") : quick ? 72 : 144;
     if (threads < 1 || w < 4 || h < 2 || w > 8192 || h > 8192 || w % 4 || h % 2)
         throw usage_error("need --threads >= 1, a width in 4..8192 divisible by 4 and an even height in 2..8192");
     timing_rules rules;
@@ -121,8 +121,9 @@ int run(int argc, const char* const* argv) {
             reference ref{std::vector<hit>(rays.size()), std::vector<std::uint8_t>(rays.size())};
             trace_closest(exact, rays, ref.closest, ref_threads);
             trace_any(exact, rays, ref.any, ref_threads);
-            // Linear-cost structures on big scenes trace an evenly spread sample of the rays.
-            const std::size_t linear_limit = std::max<std::size_t>(256, std::size_t(2e9 / double(std::max<std::size_t>(1, s.mesh.triangle_count()))));
+            // Linear-cost structures (brute force) on big scenes trace an evenly spread sample of the rays:
+            // at most 5e8 triangle tests a run.
+            const std::size_t linear_limit = std::max<std::size_t>(256, std::size_t(5e8 / double(std::max<std::size_t>(1, s.mesh.triangle_count()))));
             for (const accel_entry& e : entries) {
                 const bool packet = e.name.find("packet8") != std::string::npos;
                 if (packet && kind != ray_kind::primary) {

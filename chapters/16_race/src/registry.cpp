@@ -2,12 +2,8 @@
 #include "strahl/race/brute_force.hpp"
 #include "strahl/race/embree_accel.hpp"
 #include "strahl/race/oo_tracer.hpp"
-#ifdef STRAHL_HAVE_CH02  // (while chapters 02 and 03 are being written; goes once both have landed)
 #include "strahl/ch02/accel.hpp"
-#endif
-#ifdef STRAHL_HAVE_CH03
 #include "strahl/ch03/accel.hpp"
-#endif
 #include <stdexcept>
 
 namespace strahl::race {
@@ -18,14 +14,10 @@ std::vector<accel_entry> registered_accels(const registry_options& o) {
          [] { return std::make_unique<brute_force>(); }, true},
         {"ch01-virtual", "01", "chapter 01's object-oriented tracer: a virtual call per triangle, brute force",
          [] { return make_oo_tracer(); }, true},
-#ifdef STRAHL_HAVE_CH02
         {"ch02-grid", "02", "uniform grid, 3D-DDA with mailboxing, over plain triangles", [] { return ch02::make_accel(false); }},
         {"ch02-grid-virtual", "02", "the same grid over chapter 01's virtual objects", [] { return ch02::make_accel(true); }},
-#endif
-#ifdef STRAHL_HAVE_CH03
         {"ch03-kd", "03", "SAH k-d tree, front-to-back traversal, over plain triangles", [] { return ch03::make_accel(false); }},
         {"ch03-kd-virtual", "03", "the same k-d tree over chapter 01's virtual objects", [] { return ch03::make_accel(true); }},
-#endif
         // Later chapters register here, one line each, e.g.
         // {"ch04-median", "04", "BVH, object median split", [] { return ch04::make_median_bvh(); }},
     };
