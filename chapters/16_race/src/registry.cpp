@@ -4,6 +4,7 @@
 #include "strahl/race/oo_tracer.hpp"
 #include "strahl/ch02/accel.hpp"
 #include "strahl/ch03/accel.hpp"
+#include "strahl/ch04/accel.hpp"
 #include <stdexcept>
 
 namespace strahl::race {
@@ -18,8 +19,14 @@ std::vector<accel_entry> registered_accels(const registry_options& o) {
         {"ch02-grid-virtual", "02", "the same grid over chapter 01's virtual objects", [] { return ch02::make_accel(true); }},
         {"ch03-kd", "03", "SAH k-d tree, front-to-back traversal, over plain triangles", [] { return ch03::make_accel(false); }},
         {"ch03-kd-virtual", "03", "the same k-d tree over chapter 01's virtual objects", [] { return ch03::make_accel(true); }},
+        {"ch04-median", "04", "BVH, object median split, near-first traversal, over plain triangles",
+         [] { return ch04::make_accel(false, ch04::split_method::object_median); }},
+        {"ch04-median-virtual", "04", "the same BVH over chapter 01's virtual objects",
+         [] { return ch04::make_accel(true, ch04::split_method::object_median); }},
+        {"ch04-spatial", "04", "BVH, spatial median split, over plain triangles",
+         [] { return ch04::make_accel(false, ch04::split_method::spatial_median); }},
         // Later chapters register here, one line each, e.g.
-        // {"ch04-median", "04", "BVH, object median split", [] { return ch04::make_median_bvh(); }},
+        // {"ch05-sah", "05", "BVH, SAH split", [] { return ch05::make_accel(false); }},
     };
     if (embree_available()) {
         using q = embree_config::quality;

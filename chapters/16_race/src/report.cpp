@@ -1,5 +1,6 @@
 #include "strahl/race/report.hpp"
 #include "strahl/plot.hpp"
+#include <algorithm>
 #include <cstdio>
 #include <map>
 #include <ostream>
@@ -23,11 +24,15 @@ std::string diffs(const race_row& r, const query_result& q) {
 }  // namespace
 
 void add_embree_ratios(std::vector<race_row>& rows) {
+    // The key ignores the "~" of a sampled row: its rays are an even spread of the same set.
+    auto key = [](const race_row& r) {
+        return r.scene + "/" + (r.ray_set.ends_with('~') ? r.ray_set.substr(0, r.ray_set.size() - 1) : r.ray_set);
+    };
     std::map<std::string, const race_row*> embree;
     for (const race_row& r : rows)
-        if (r.accel == "embree-medium") embree[r.scene + "/" + r.ray_set] = &r;
+        if (r.accel == "embree-medium") embree[key(r)] = &r;
     for (race_row& r : rows) {
-        const auto it = embree.find(r.scene + "/" + r.ray_set);
+        const auto it = embree.find(key(r));
         if (it == embree.end()) continue;
         if (it->second->closest.mrays > 0.0 && r.closest.runs > 0) r.closest_vs_embree = r.closest.mrays / it->second->closest.mrays;
         if (it->second->any.mrays > 0.0 && r.any.runs > 0) r.any_vs_embree = r.any.mrays / it->second->any.mrays;
@@ -68,7 +73,7 @@ std::string to_csv(const std::vector<race_row>& rows) {
     auto o = [](const std::optional<double>& v) { return v ? fmt("%.6g", *v) : std::string(); };
     for (const race_row& r : rows) {
         out << r.scene << ',' << r.triangles << ',' << r.accel << ',' << r.chapter << ',' << (r.exact ? 1 : 0) << ','
-            << r.ray_set << ',' << r.closest.rays << ',' << fmt("%.3f", r.build_ms) << ',' << r.memory_bytes << ','
+            << r.ray_set << ',' << std::max(r.closest.rays, r.any.rays) << ',' << fmt("%.3f", r.build_ms) << ',' << r.memory_bytes << ','
             << o(r.sah) << ',' << (r.closest.runs ? fmt("%.6g", r.closest.mrays) : "") << ',' << r.closest.runs << ','
             << o(r.closest_vs_embree) << ',' << o(r.closest.box_per_ray) << ',' << o(r.closest.prim_per_ray) << ','
             << o(r.closest.nodes_per_ray) << ',' << (r.closest.runs ? std::to_string(r.closest.differing) : "") << ','
