@@ -1,0 +1,201 @@
+// ch04: the BVH. Builds chapter 04's BVH (object median and spatial median) over the teapot, the teapot in
+// a stadium and the shared bunny for both primitive sets, renders primary rays through it, and prints per
+// build: nodes, leaves, depth, memory, build time, box and triangle tests per ray, Mrays/s. Draws the
+// lecture's picture of the AABB problem: box tests per pixel as a heat map (rays grazing the surface pay
+// most), with the boxes of chosen levels drawn over it.
+#include "strahl/ch04/accel.hpp"
+#include "strahl/display.hpp"
+#include "strahl/image.hpp"
+#include "strahl/parallel.hpp"
+#include "strahl/procedural.hpp"
+#include "strahl/program.hpp"
+#include "strahl/progress.hpp"
+#include "strahl/timer.hpp"
+#include <cstdio>
+#include <mutex>
+
+#ifndef STRAHL_TRACK
+#define STRAHL_TRACK "solutions"
+#endif
+
+namespace {
+
+using namespace strahl;
+using namespace strahl::ch04;
+namespace fs = std::filesystem;
+
+struct options {
+    int width, height, first_level, last_level;
+    fs::path folder{"out/04_bvh"};
+    bool user_named = false, force = false;
+};
+
+struct primary_run {
+    std::vector<hit> hits;
+    std::vector<float> box_tests;  // per pixel
+    double seconds = 0.0;
+    counter_values counts;
+};
+
+// Primary rays through every pixel centre: timed without counters (all threads), then counted ray by ray
+// (for the heat map).
+primary_run trace_primary(const accel& a, const camera& cam, const std::string& label) {
+    const int w = cam.width(), h = cam.height();
+    std::vector<ray> rays(std::size_t(w) * h);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) rays[std::size_t(y) * w + x] = cam.pixel_ray(x, y);
+    primary_run run;
+    run.hits.resize(rays.size());
+    run.box_tests.resize(rays.size());
+    {
+        progress_bar bar(label, std::uint64_t(h), "rows");
+        const timer clock;
+        parallel_for_chunks(std::size_t(h), 4, [&](std::size_t y0, std::size_t y1) {
+            const std::size_t b = y0 * w, n = (y1 - y0) * w;
+            a.intersect(std::span(rays).subspan(b, n), std::span(run.hits).subspan(b, n));
+            bar.add(y1 - y0);
+        });
+        run.seconds = clock.seconds();
+        bar.finish();
+    }
+    std::mutex m;
+    std::vector<hit> counted(rays.size());
+    parallel_for_chunks(std::size_t(h), 4, [&](std::size_t y0, std::size_t y1) {
+        counter_values sum;
+        for (std::size_t i = y0 * w; i < y1 * w; ++i) {
+            const auto c = a.intersect_counted(std::span(rays).subspan(i, 1), std::span(counted).subspan(i, 1));
+            if (!c) continue;
+            run.box_tests[i] = float(c->box_tests);
+            sum += *c;
+        }
+        const std::lock_guard lock(m);
+        run.counts += sum;
+    });
+    return run;
+}
+
+// Facing-ratio shading: |cos| between the ray and the triangle's normal; background dark blue.
+image shade(const scene& s, const camera& cam, const std::vector<hit>& hits) {
+    image img(cam.width(), cam.height(), color(0.05f, 0.07f, 0.12f));
+    for (int y = 0; y < cam.height(); ++y)
+        for (int x = 0; x < cam.width(); ++x) {
+            const hit& h = hits[std::size_t(y) * cam.width() + x];
+            if (!h.found()) continue;
+            const auto t = s.mesh.triangle(h.prim);
+            const vec3 n = glm::cross(t[1] - t[0], t[2] - t[0]);
+            const vec3 d = cam.pixel_ray(x, y).dir;
+            const float f = std::abs(glm::dot(n, d)) / std::max(1e-30f, glm::length(n) * glm::length(d));
+            img.at(x, y) = color(0.15f + 0.8f * f);
+        }
+    return img;
+}
+
+// The heat map of box tests per pixel, with the boxes of the chosen levels drawn over its picture rows.
+image box_test_picture(const bvh& t, const camera& cam, const primary_run& r, const options& o) {
+    static const color palette[] = {{1.0f, 1.0f, 1.0f}, {1.0f, 0.3f, 0.2f}, {1.0f, 0.7f, 0.1f},
+                                    {0.3f, 1.0f, 0.4f}, {0.3f, 0.8f, 1.0f}, {0.8f, 0.5f, 1.0f}};
+    image heat = heat_map(r.box_tests, cam.width(), cam.height(), "box tests per ray");
+    image top(cam.width(), cam.height());
+    std::copy_n(heat.pixels.begin(), top.pixels.size(), top.pixels.begin());
+    std::vector<line_segment> lines;
+    for (const level_box& lb : level_boxes(t, o.first_level, o.last_level)) {
+        const auto edges = box_wireframe(lb.box, palette[(lb.level - o.first_level) % 6]);
+        lines.insert(lines.end(), edges.begin(), edges.end());
+    }
+    draw_lines(top, cam, lines, 1.0f);
+    std::copy(top.pixels.begin(), top.pixels.end(), heat.pixels.begin());
+    return heat;
+}
+
+void run_scene(const scene& s, const options& o) {
+    const camera cam(s.camera, o.width, o.height);
+    const fs::path render_path = o.folder / (s.name + ".png"), heat_path = o.folder / (s.name + "_box_tests.png");
+    prepare_output(render_path, o.user_named, o.force);
+    prepare_output(heat_path, o.user_named, o.force);
+    std::printf("%s: %zu triangles, %d x %d primary rays\n", s.name.c_str(), s.mesh.triangle_count(), o.width,
+                o.height);
+    std::printf("  %-8s %-9s %8s %5s %9s %9s %10s %9s %9s %8s\n", "split", "set", "nodes", "depth", "memory",
+                "build ms", "nodes/ray", "boxes/ray", "tris/ray", "Mrays/s");
+    for (const split_method m : {split_method::object_median, split_method::spatial_median})
+        for (const bool is_virtual : {false, true}) {
+            bvh_build_params p;
+            p.split = m;
+            const auto a = make_bvh_accel(is_virtual, p);
+            a->build(s);
+            const bvh& t = a->tree();
+            const primary_run r = trace_primary(*a, cam, s.name + " " + a->name());
+            const double rays = double(r.hits.size());
+            std::printf("  %-8s %-9s %8zu %5d %8.1fK %9.1f %10.1f %9.1f %9.1f %8.2f\n", to_string(m),
+                        is_virtual ? "virtual" : "triangles", t.nodes.size(), t.stats.depth,
+                        double(t.memory_bytes()) / 1024.0, t.stats.build_ms, r.counts.per_ray(r.counts.nodes_visited),
+                        r.counts.per_ray(r.counts.box_tests), r.counts.per_ray(r.counts.prim_tests),
+                        rays / r.seconds * 1e-6);
+            if (is_virtual || m != split_method::object_median) continue;
+            write_image(render_path, shade(s, cam, r.hits));
+            write_image(heat_path, box_test_picture(t, cam, r, o));
+        }
+    std::printf("  memory: nodes (32 bytes) + index array (4 bytes per triangle); at most 2N - 1 nodes\n");
+    std::printf("  wrote    %s, %s\n", render_path.string().c_str(), heat_path.string().c_str());
+}
+
+int run(int argc, const char* const* argv) {
+    cli args("ch04", "Chapter 04, the BVH (" STRAHL_TRACK "): object and spatial median BVHs over plain "
+             "triangles and virtual objects, primary rays through them, tree statistics, and box tests per "
+             "pixel as a heat map with the boxes of chosen levels drawn over it.");
+    args.option("scene", "NAME", "all", "teapot, stadium, bunny or all (all: teapot, stadium, bunny)")
+        .option("width", "N", "", "image width (default 640, 320 with --quick)")
+        .option("height", "N", "", "image height (default 3/4 of the width)")
+        .option("levels", "A-B", "2-3", "draw the boxes of the nodes at depths A to B (the root is depth 0)")
+        .option("threads", "N", "0", "worker threads (0: one per core)")
+        .option("out", "DIR", "", "write the images into DIR/ (default out/04_bvh/)")
+        .flag("force", "replace existing files in a folder named with --out")
+        .flag("quick", "smaller images and only the built-in scenes");
+    if (!args.parse(argc, argv)) return 0;
+    const bool quick = args.has("quick");
+    const int threads = args.get_int("threads");
+    if (threads < 0) throw usage_error("--threads must be 0 (all cores) or more");
+    const thread_limit limit(threads);
+    options o;
+    o.width = args.has("width") ? args.get_int("width") : (quick ? 320 : 640);
+    o.height = args.has("height") ? args.get_int("height") : o.width * 3 / 4;
+    if (o.width < 1 || o.width > 16384 || o.height < 1 || o.height > 16384)
+        throw usage_error("--width and --height must lie in [1, 16384]");
+    const std::string levels = args.get("levels");
+    char dash = 0, extra = 0;
+    if (std::sscanf(levels.c_str(), "%d%c%d%c", &o.first_level, &dash, &o.last_level, &extra) != 3 || dash != '-' ||
+        o.first_level < 0 || o.last_level < o.first_level || o.last_level > 20)
+        throw usage_error("--levels must be A-B with 0 <= A <= B <= 20, not '" + levels + "'");
+    if (args.has("out")) {
+        o.folder = args.get("out");
+        o.user_named = true;
+    }
+    o.force = args.has("force");
+
+    const std::string which = args.get("scene");
+    if (which != "all" && which != "teapot" && which != "stadium" && which != "bunny")
+        throw usage_error("--scene must be teapot, stadium, bunny or all, not '" + which + "'");
+    if (which == "all" || which == "teapot") run_scene(builtin_scene("teapot"), o);
+    if (which == "all" || which == "stadium") run_scene(builtin_scene("teapot_stadium"), o);
+    if ((which == "all" && !quick) || which == "bunny") {
+        const fs::path p = fs::path(STRAHL_SHARED_SCENES) / "bunny.ply";
+        std::error_code ec;
+        if (!fs::exists(p, ec)) {
+            std::printf("bunny: skipped, %s is not there (the course's shared meshes)\n", p.string().c_str());
+        } else {
+            scene s = load_scene(p);
+            s.name = "bunny";
+            run_scene(s, o);
+        }
+    }
+    std::printf("against the grid, the k-d tree and Embree, on the same rays:\n"
+                "  build/release/bin/race --quick --accels brute,ch02-grid,ch03-kd,ch04-median,ch04-spatial,"
+                "embree-medium\n");
+    return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    const bool exercises = std::string(STRAHL_TRACK) == "exercises";
+    return guarded_main(exercises ? "ch04_exercise" : "ch04", run, argc, argv);
+}

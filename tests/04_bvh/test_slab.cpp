@@ -1,0 +1,61 @@
+// Exercise 04.1 the robust slab test (8 points). Only slab_test, on hand-made boxes and rays.
+#include "strahl/ch04/traverse.hpp"
+#include <catch2/catch.hpp>
+
+using namespace strahl;
+using namespace strahl::ch04;
+
+namespace {
+const aabb unit{vec3(0.0f), vec3(1.0f)};
+bool meets(const aabb& b, vec3 org, vec3 dir, float tmin = 0.0f, float tmax = inf) {
+    return slab_test(b, org, 1.0f / dir, tmin, tmax);
+}
+}  // namespace
+
+TEST_CASE("04.1 slab test: rays that meet the box and rays that miss it", "[ch04][pts:3]") {
+    CHECK(meets(unit, vec3(-1, 0.5f, 0.5f), vec3(1, 0, 0)));
+    CHECK(meets(unit, vec3(2, 0.5f, 0.5f), vec3(-1, 0, 0)));
+    CHECK(meets(unit, vec3(-1, -1, -1), vec3(1, 1, 1)));            // through the corners
+    CHECK(meets(unit, vec3(0.5f), vec3(0.3f, -0.2f, 0.7f)));         // from inside
+    CHECK_FALSE(meets(unit, vec3(-1, 0.5f, 0.5f), vec3(-1, 0, 0)));  // box behind the ray
+    CHECK_FALSE(meets(unit, vec3(-1, 2.5f, 0.5f), vec3(1, 1, 0)));   // passes beside it
+    CHECK_FALSE(meets(unit, vec3(-1, -1, 0.5f), vec3(1, 3, 0)));     // slabs' intervals do not overlap
+    // The interval [tmin, tmax] clips: the box lies at t in [1, 2].
+    CHECK(meets(unit, vec3(-1, 0.5f, 0.5f), vec3(1, 0, 0), 0.0f, 1.5f));
+    CHECK(meets(unit, vec3(-1, 0.5f, 0.5f), vec3(1, 0, 0), 1.5f, 5.0f));
+    CHECK_FALSE(meets(unit, vec3(-1, 0.5f, 0.5f), vec3(1, 0, 0), 0.0f, 0.9f));
+    CHECK_FALSE(meets(unit, vec3(-1, 0.5f, 0.5f), vec3(1, 0, 0), 2.1f, 5.0f));
+}
+
+TEST_CASE("04.1 slab test: closed boxes, touching counts, flat boxes are hit", "[ch04][pts:2]") {
+    CHECK(meets(unit, vec3(-1, 1, 0.5f), vec3(1, 0, 0)));                  // grazing the face y = 1
+    CHECK(meets(unit, vec3(-1, 0.5f, 0.5f), vec3(1, 0, 0), 0.0f, 1.0f));   // tmax exactly at the entry
+    const aabb flat{vec3(0, 0, 0.5f), vec3(1, 1, 0.5f)};                   // zero thickness on z
+    CHECK(meets(flat, vec3(0.5f, 0.5f, 2), vec3(0, 0, -1)));
+    CHECK(meets(flat, vec3(0.25f, 0.5f, -3), vec3(0.1f, 0.05f, 1)));
+    CHECK_FALSE(meets(flat, vec3(0.5f, 0.5f, 2), vec3(0, 0, 1)));
+    // A box one ulp wide, met along the diagonal.
+    const aabb tiny{vec3(1.0f), vec3(1.0000001f)};
+    CHECK(meets(tiny, vec3(0.0f), vec3(1.0f)));
+}
+
+TEST_CASE("04.1 slab test: direction components of +0 and -0, origins on a slab plane", "[ch04][pts:3]") {
+    for (const float z : {0.0f, -0.0f}) {
+        // Parallel to x's slab, inside it, outside it, and exactly on its planes (0 * inf = NaN there).
+        CHECK(meets(unit, vec3(0.5f, -1, 0.5f), vec3(z, 1, z)));
+        CHECK_FALSE(meets(unit, vec3(1.5f, -1, 0.5f), vec3(z, 1, z)));
+        CHECK_FALSE(meets(unit, vec3(-0.5f, -1, 0.5f), vec3(z, 1, z)));
+        CHECK(meets(unit, vec3(0.0f, -1, 0.5f), vec3(z, 1, z)));
+        CHECK(meets(unit, vec3(1.0f, -1, 0.5f), vec3(z, 1, z)));
+        CHECK(meets(unit, vec3(0.0f, -1, 0.0f), vec3(z, 1, z)));  // along an edge
+        CHECK_FALSE(meets(unit, vec3(0.0f, -1, 0.0f), vec3(z, -1, z)));  // the same edge, going away
+        // In the plane of a flat box.
+        const aabb flat{vec3(0, 0, 0.5f), vec3(1, 1, 0.5f)};
+        CHECK(meets(flat, vec3(-1, 0.5f, 0.5f), vec3(1, z, z)));
+        CHECK_FALSE(meets(flat, vec3(-1, 0.5f, 0.6f), vec3(1, z, z)));
+    }
+    // Starting on a face, going in and going out.
+    CHECK(meets(unit, vec3(0, 0.5f, 0.5f), vec3(1, 0.1f, 0)));
+    CHECK(meets(unit, vec3(0, 0.5f, 0.5f), vec3(-1, 0.1f, 0)));  // touches at t = 0
+    CHECK_FALSE(meets(unit, vec3(0, 0.5f, 0.5f), vec3(-1, 0.1f, 0), 1e-3f, inf));
+}
