@@ -7,12 +7,10 @@
 #include "strahl/image.hpp"
 #include "strahl/parallel.hpp"
 #include "strahl/procedural.hpp"
+#include "strahl/primary_trace.hpp"
 #include "strahl/program.hpp"
-#include "strahl/progress.hpp"
-#include "strahl/timer.hpp"
 #include <cstdio>
 #include <iostream>
-#include <mutex>
 
 #ifndef STRAHL_TRACK
 #define STRAHL_TRACK "solutions"
@@ -29,42 +27,6 @@ struct options {
     fs::path folder{"out/03_kd_tree"};
     bool user_named = false, force = false;
 };
-
-struct primary_run {
-    std::vector<hit> hits;
-    double seconds = 0.0;
-    counter_values counts;
-};
-
-// Primary rays through every pixel centre: timed without counters (all threads), then counted.
-primary_run trace_primary(const accel& a, const camera& cam, const std::string& label) {
-    const int w = cam.width(), h = cam.height();
-    std::vector<ray> rays(std::size_t(w) * h);
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x) rays[std::size_t(y) * w + x] = cam.pixel_ray(x, y);
-    primary_run run;
-    run.hits.resize(rays.size());
-    {
-        progress_bar bar(label, std::uint64_t(h), "rows");
-        const timer clock;
-        parallel_for_chunks(std::size_t(h), 4, [&](std::size_t y0, std::size_t y1) {
-            const std::size_t b = y0 * w, n = (y1 - y0) * w;
-            a.intersect(std::span(rays).subspan(b, n), std::span(run.hits).subspan(b, n));
-            bar.add(y1 - y0);
-        });
-        run.seconds = clock.seconds();
-        bar.finish();
-    }
-    std::mutex m;
-    std::vector<hit> counted(rays.size());
-    parallel_for_chunks(std::size_t(h), 4, [&](std::size_t y0, std::size_t y1) {
-        const std::size_t b = y0 * w, n = (y1 - y0) * w;
-        const auto c = a.intersect_counted(std::span(rays).subspan(b, n), std::span(counted).subspan(b, n));
-        const std::lock_guard lock(m);
-        if (c) run.counts += *c;
-    });
-    return run;
-}
 
 // Facing-ratio shading: |cos| between the ray and the triangle's normal; background dark blue.
 image shade(const scene& s, const camera& cam, const std::vector<hit>& hits) {
@@ -106,7 +68,7 @@ void run_scene(const scene& s, const options& o) {
         const auto a = make_kd_accel(is_virtual);
         a->build(s);
         const kd_tree& t = a->tree();
-        const primary_run r = trace_primary(*a, cam, s.name + (is_virtual ? " virtual" : " triangles"));
+        const primary_trace r = trace_primary(*a, cam, s.name + (is_virtual ? " virtual" : " triangles"));
         const double rays = double(r.hits.size());
         std::printf("  %-9s %8zu %8zu %5d %9.2f %8.1fK %9.1f %6.1f %10.1f %10.1f %8.2f\n",
                     is_virtual ? "virtual" : "triangles", t.nodes.size(), t.stats.leaves, t.stats.depth,

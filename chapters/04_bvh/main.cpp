@@ -8,11 +8,9 @@
 #include "strahl/image.hpp"
 #include "strahl/parallel.hpp"
 #include "strahl/procedural.hpp"
+#include "strahl/primary_trace.hpp"
 #include "strahl/program.hpp"
-#include "strahl/progress.hpp"
-#include "strahl/timer.hpp"
 #include <cstdio>
-#include <mutex>
 
 #ifndef STRAHL_TRACK
 #define STRAHL_TRACK "solutions"
@@ -29,50 +27,6 @@ struct options {
     fs::path folder{"out/04_bvh"};
     bool user_named = false, force = false;
 };
-
-struct primary_run {
-    std::vector<hit> hits;
-    std::vector<float> box_tests;  // per pixel
-    double seconds = 0.0;
-    counter_values counts;
-};
-
-// Primary rays through every pixel centre: timed without counters (all threads), then counted ray by ray
-// (for the heat map).
-primary_run trace_primary(const accel& a, const camera& cam, const std::string& label) {
-    const int w = cam.width(), h = cam.height();
-    std::vector<ray> rays(std::size_t(w) * h);
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x) rays[std::size_t(y) * w + x] = cam.pixel_ray(x, y);
-    primary_run run;
-    run.hits.resize(rays.size());
-    run.box_tests.resize(rays.size());
-    {
-        progress_bar bar(label, std::uint64_t(h), "rows");
-        const timer clock;
-        parallel_for_chunks(std::size_t(h), 4, [&](std::size_t y0, std::size_t y1) {
-            const std::size_t b = y0 * w, n = (y1 - y0) * w;
-            a.intersect(std::span(rays).subspan(b, n), std::span(run.hits).subspan(b, n));
-            bar.add(y1 - y0);
-        });
-        run.seconds = clock.seconds();
-        bar.finish();
-    }
-    std::mutex m;
-    std::vector<hit> counted(rays.size());
-    parallel_for_chunks(std::size_t(h), 4, [&](std::size_t y0, std::size_t y1) {
-        counter_values sum;
-        for (std::size_t i = y0 * w; i < y1 * w; ++i) {
-            const auto c = a.intersect_counted(std::span(rays).subspan(i, 1), std::span(counted).subspan(i, 1));
-            if (!c) continue;
-            run.box_tests[i] = float(c->box_tests);
-            sum += *c;
-        }
-        const std::lock_guard lock(m);
-        run.counts += sum;
-    });
-    return run;
-}
 
 // Facing-ratio shading: |cos| between the ray and the triangle's normal; background dark blue.
 image shade(const scene& s, const camera& cam, const std::vector<hit>& hits) {
@@ -91,7 +45,7 @@ image shade(const scene& s, const camera& cam, const std::vector<hit>& hits) {
 }
 
 // The heat map of box tests per pixel, with the boxes of the chosen levels drawn over its picture rows.
-image box_test_picture(const bvh& t, const camera& cam, const primary_run& r, const options& o) {
+image box_test_picture(const bvh& t, const camera& cam, const primary_trace& r, const options& o) {
     static const color palette[] = {{1.0f, 1.0f, 1.0f}, {1.0f, 0.3f, 0.2f}, {1.0f, 0.7f, 0.1f},
                                     {0.3f, 1.0f, 0.4f}, {0.3f, 0.8f, 1.0f}, {0.8f, 0.5f, 1.0f}};
     image heat = heat_map(r.box_tests, cam.width(), cam.height(), "box tests per ray");
@@ -123,7 +77,7 @@ void run_scene(const scene& s, const options& o) {
             const auto a = make_bvh_accel(is_virtual, p);
             a->build(s);
             const bvh& t = a->tree();
-            const primary_run r = trace_primary(*a, cam, s.name + " " + a->name());
+            const primary_trace r = trace_primary(*a, cam, s.name + " " + a->name());
             const double rays = double(r.hits.size());
             std::printf("  %-8s %-9s %8zu %5d %8.1fK %9.1f %10.1f %9.1f %9.1f %8.2f\n", to_string(m),
                         is_virtual ? "virtual" : "triangles", t.nodes.size(), t.stats.depth,

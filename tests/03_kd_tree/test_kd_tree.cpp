@@ -4,6 +4,7 @@
 #include "strahl/ch03/accel.hpp"
 #include "strahl/procedural.hpp"
 #include "strahl/rng.hpp"
+#include "exactness.hpp"
 #include <catch2/catch.hpp>
 #include <cstring>
 #include <limits>
@@ -11,21 +12,10 @@
 using namespace strahl;
 using namespace strahl::ch03;
 
+using test::copies;
+using test::mesh_only;
+
 namespace {
-
-scene mesh_only(triangle_mesh m) {
-    scene s;
-    s.name = "test";
-    s.mesh = std::move(m);
-    return s;
-}
-
-triangle_mesh copies(std::size_t n, vec3 a, vec3 b, vec3 c) {
-    triangle_mesh m;
-    m.positions = {a, b, c};
-    for (std::size_t i = 0; i < n; ++i) m.indices.push_back(uvec3(0, 1, 2));
-    return m;
-}
 
 // Rays made to break a k-d tree: from inside the box, along each axis with +0 and -0 in the other
 // components, lying in and starting on the tree's split planes, and NaN.
@@ -62,42 +52,13 @@ std::vector<ray> nasty_rays(const kd_tree& t, std::size_t n, std::uint64_t seed)
     return rays;
 }
 
-bool same(const hit& a, const hit& b) {
-    return a.prim == b.prim && std::memcmp(&a.t, &b.t, 4) == 0 && std::memcmp(&a.u, &b.u, 4) == 0 &&
-           std::memcmp(&a.v, &b.v, 4) == 0;
-}
-
 // Checks both primitive sets against brute force over triangle_set, closest and any hit, counted too.
 void check_exact(const scene& s, std::size_t n_rays) {
-    const ch01::triangle_set tris(s.mesh);
     for (const bool is_virtual : {false, true}) {
         const auto a = make_kd_accel(is_virtual);
         a->build(s);
         INFO(a->name() << " on " << s.mesh.triangle_count() << " triangles");
-        const std::vector<ray> rays = nasty_rays(a->tree(), n_rays, 7);
-        std::vector<hit> got(rays.size()), got_counted(rays.size());
-        std::vector<std::uint8_t> blocked(rays.size()), blocked_counted(rays.size());
-        a->intersect(rays, got);
-        a->occluded(rays, blocked);
-        const auto counts = a->intersect_counted(rays, got_counted);
-        a->occluded_counted(rays, blocked_counted);
-        REQUIRE(counts);
-        CHECK(counts->rays == rays.size());
-        std::size_t wrong = 0;
-        for (std::size_t i = 0; i < rays.size(); ++i) {
-            ray r = rays[i];
-            hit ref;
-            bool any = false;
-            for (std::uint32_t k = 0; k < tris.size(); ++k) {
-                tris.intersect(k, r, ref);
-                any = any || tris.occludes(k, rays[i]);
-            }
-            const bool ok = same(got[i], ref) && same(got_counted[i], ref) && (blocked[i] != 0) == any &&
-                            blocked_counted[i] == blocked[i];
-            if (!ok && ++wrong <= 3) FAIL_CHECK("ray " << i << ": t " << got[i].t << " prim " << got[i].prim
-                                                       << ", brute force t " << ref.t << " prim " << ref.prim);
-        }
-        CHECK(wrong == 0);
+        CHECK(test::disagreements_with_brute_force(*a, s.mesh, nasty_rays(a->tree(), n_rays, 7)) == 0);
     }
 }
 

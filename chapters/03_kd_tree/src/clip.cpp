@@ -1,4 +1,4 @@
-// The root box clip and the ray's slack: where a ray's segment lies inside the k-d tree's box.
+// The root box clip: where a ray's segment lies inside the k-d tree's box.
 // (The slab test of T. L. Kay and J. T. Kajiya, "Ray tracing complex scenes", SIGGRAPH 1986, written so
 // that direction components of +0 and -0 never produce 0 * inf.)
 #include "strahl/ch03/traverse.hpp"
@@ -29,14 +29,6 @@ bool clip_to_box(const ray& r, const vec3& inv_dir, const aabb& box, float slack
     t0 = std::max(r.tmin, enter - slack);
     t1 = std::min(r.tmax, exit + slack);
     return t0 <= t1;
-}
-
-float ray_slack(const ray& r, const aabb& box) {
-    // Relative 2^-16 of the farthest t inside the box, plus 1e-5 of the box's diagonal, in t units.
-    const float len = glm::length(r.dir);
-    const float diag = glm::length(box.extent());
-    const float reach = glm::length(r.org - box.centroid()) + diag;
-    return (reach * 0x1p-16f + 1e-5f * diag) / len;
 }
 
 }  // namespace strahl::ch03

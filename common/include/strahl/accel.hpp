@@ -59,4 +59,46 @@ public:
     virtual bool exact() const { return true; }
 };
 
+// Most structures answer one ray at a time. Deriving from per_ray_accel<Derived> supplies the four batch
+// queries from Derived's two per-ray ones, templated on the counters (stats.hpp):
+//   template <class Stats> hit closest(const ray& r, Stats& stats) const;
+//   template <class Stats> bool any(const ray& r, Stats& stats) const;
+// Each batch is one virtual call; the loop over its rays calls Derived's code directly (and inlines it).
+// Base is accel, or an interface of a chapter's own that derives from accel.
+template <class Derived, class Base = accel>
+class per_ray_accel : public Base {
+public:
+    void intersect(std::span<const ray> rays, std::span<hit> hits) const override {
+        not_counting stats;
+        closest_all(rays, hits, stats);
+    }
+    void occluded(std::span<const ray> rays, std::span<std::uint8_t> blocked) const override {
+        not_counting stats;
+        any_all(rays, blocked, stats);
+    }
+    std::optional<counter_values> intersect_counted(std::span<const ray> rays, std::span<hit> hits) const override {
+        counting stats;
+        closest_all(rays, hits, stats);
+        return stats.values();
+    }
+    std::optional<counter_values> occluded_counted(std::span<const ray> rays,
+                                                   std::span<std::uint8_t> blocked) const override {
+        counting stats;
+        any_all(rays, blocked, stats);
+        return stats.values();
+    }
+
+private:
+    template <class Stats>
+    void closest_all(std::span<const ray> rays, std::span<hit> hits, Stats& stats) const {
+        const Derived& self = static_cast<const Derived&>(*this);
+        for (std::size_t i = 0; i < rays.size(); ++i) hits[i] = self.closest(rays[i], stats);
+    }
+    template <class Stats>
+    void any_all(std::span<const ray> rays, std::span<std::uint8_t> blocked, Stats& stats) const {
+        const Derived& self = static_cast<const Derived&>(*this);
+        for (std::size_t i = 0; i < rays.size(); ++i) blocked[i] = self.any(rays[i], stats) ? 1 : 0;
+    }
+};
+
 }  // namespace strahl

@@ -11,7 +11,7 @@
 namespace strahl::ch02 {
 
 template <class Set>
-class grid_accel final : public strahl::accel {
+class grid_accel final : public per_ray_accel<grid_accel<Set>> {
 public:
     explicit grid_accel(grid_options opt = {}) : opt_(opt) {}
 
@@ -29,45 +29,25 @@ public:
         });
     }
 
-    void intersect(std::span<const ray> rays, std::span<hit> hits) const override {
-        not_counting quiet;
-        closest(rays, hits, quiet);
-    }
-    void occluded(std::span<const ray> rays, std::span<std::uint8_t> blocked) const override {
-        not_counting quiet;
-        any(rays, blocked, quiet);
-    }
-    std::optional<counter_values> intersect_counted(std::span<const ray> rays, std::span<hit> hits) const override {
-        counting c;
-        closest(rays, hits, c);
-        return c.values();
-    }
-    std::optional<counter_values> occluded_counted(std::span<const ray> rays,
-                                                   std::span<std::uint8_t> blocked) const override {
-        counting c;
-        any(rays, blocked, c);
-        return c.values();
-    }
     std::size_t memory_bytes() const override {
         return grid_.memory_bytes() + (set_ ? set_->memory_bytes() : 0);
     }
 
     const uniform_grid& grid() const { return grid_; }
 
-private:
+    // The per-ray queries (per_ray_accel turns them into batches).
     template <class Stats>
-    void closest(std::span<const ray> rays, std::span<hit> hits, Stats& stats) const {
-        for (std::size_t i = 0; i < rays.size(); ++i) {
-            hits[i] = hit{};
-            if (set_) grid_.intersect(*set_, rays[i], hits[i], stats);
-        }
+    hit closest(const ray& r, Stats& stats) const {
+        hit best;
+        if (set_) grid_.intersect(*set_, r, best, stats);
+        return best;
     }
     template <class Stats>
-    void any(std::span<const ray> rays, std::span<std::uint8_t> blocked, Stats& stats) const {
-        for (std::size_t i = 0; i < rays.size(); ++i)
-            blocked[i] = set_ && grid_.occluded(*set_, rays[i], stats) ? 1 : 0;
+    bool any(const ray& r, Stats& stats) const {
+        return set_ && grid_.occluded(*set_, r, stats);
     }
 
+private:
     grid_options opt_;
     std::optional<Set> set_;
     uniform_grid grid_;

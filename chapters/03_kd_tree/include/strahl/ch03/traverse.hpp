@@ -2,6 +2,7 @@
 // "Heuristic Ray Shooting Algorithms", PhD thesis, 2000, the "recursive" TA_B variant; Wald and Havran 2006).
 // Traversal is separate from intersection: it is handed the leaf test.
 #pragma once
+#include "strahl/tree_query.hpp"
 #include "strahl/ch03/kd_tree.hpp"
 #include "strahl/ray.hpp"
 #include <algorithm>
@@ -27,8 +28,7 @@ child_visit near_far(const ray& r, const vec3& inv_dir, int axis, float split, f
 // (tmin, tmax); false when it misses. Direction components of +-0 are handled without 0 * inf.
 bool clip_to_box(const ray& r, const vec3& inv_dir, const aabb& box, float slack, float& t0, float& t1);
 
-// The slack of a ray: relative 2^-16 of the largest t inside the box plus 1e-5 of the box diagonal in t units.
-float ray_slack(const ray& r, const aabb& box);
+// (The slack of a ray, ray_slack, is strahl/tree_query.hpp's, shared with every tree.)
 
 // Visits the leaves the ray's segment enters, front to back. leaf(first, count, t0, t1) tests the leaf's
 // references and returns true to stop (any hit). A closest-hit leaf test shrinks r.tmax (record_closest);

@@ -4,6 +4,7 @@
 //   with gamma(3), the ordered traversal over a flat node array).
 // Traversal is separate from intersection: it is handed the leaf test.
 #pragma once
+#include "strahl/tree_query.hpp"
 #include "strahl/ch04/bvh.hpp"
 #include "strahl/ray.hpp"
 #include <limits>
@@ -35,10 +36,8 @@ struct child_order {
 };
 child_order ordered_children(std::uint32_t index, const bvh_node& node, const vec3& dir);
 
-// The slack of a ray, in t units: relative 2^-16 of the farthest t inside the box plus 1e-5 of its
-// diagonal. A triangle test's t carries its own rounding error, which the box's t need not share; boxes are
-// tested against [tmin - slack, tmax + slack] so that no primitive whose computed hit could win is lost.
-float ray_slack(const ray& r, const aabb& box);
+// Boxes are tested against [tmin - slack, tmax + slack], with ray_slack (strahl/tree_query.hpp): a
+// triangle test's t carries its own rounding error, which the box's t need not share.
 
 // Visits the leaves whose boxes the ray meets, near child first. leaf(first, count) tests prim_ids
 // [first, first + count) and returns true to stop (any hit). A closest-hit leaf test shrinks r.tmax to

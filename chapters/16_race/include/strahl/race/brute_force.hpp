@@ -8,23 +8,19 @@
 
 namespace strahl::race {
 
-class brute_force final : public accel {
+class brute_force final : public per_ray_accel<brute_force> {
 public:
     std::string name() const override { return "brute"; }
     void build(const scene& s) override;
-    void intersect(std::span<const ray> rays, std::span<hit> hits) const override;
-    void occluded(std::span<const ray> rays, std::span<std::uint8_t> blocked) const override;
-    std::optional<counter_values> intersect_counted(std::span<const ray> rays, std::span<hit> hits) const override;
-    std::optional<counter_values> occluded_counted(std::span<const ray> rays,
-                                                   std::span<std::uint8_t> blocked) const override;
     std::size_t memory_bytes() const override { return triangles_->memory_bytes(); }
 
-private:
+    // Every triangle in id order; see brute_force.cpp.
     template <class Stats>
-    void closest(std::span<const ray> rays, std::span<hit> hits, Stats& stats) const;
+    hit closest(const ray& query, Stats& stats) const;
     template <class Stats>
-    void any(std::span<const ray> rays, std::span<std::uint8_t> blocked, Stats& stats) const;
+    bool any(const ray& query, Stats& stats) const;
 
+private:
     // The mesh's triangles in id order (none before build(): every ray misses).
     std::unique_ptr<ch01::triangle_set> triangles_ = std::make_unique<ch01::triangle_set>(triangle_mesh{});
 };
