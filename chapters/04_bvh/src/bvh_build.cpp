@@ -110,6 +110,17 @@ bvh build_bvh(std::span<const aabb> boxes, std::span<const vec3> centroids, cons
     return t;
 }
 
+double sah_tree_cost(const bvh& tree, float c_traversal, float c_intersection) {
+    if (tree.nodes.empty()) return 0.0;
+    const double root = tree.nodes[0].box().surface_area();
+    double cost = 0.0;
+    for (const bvh_node& n : tree.nodes) {
+        const double p = root > 0.0 ? double(n.box().surface_area()) / root : 1.0;
+        cost += n.is_leaf() ? double(c_intersection) * double(n.count) * p : double(c_traversal) * p;
+    }
+    return cost;
+}
+
 std::vector<level_box> level_boxes(const bvh& tree, int first_level, int last_level) {
     std::vector<level_box> out;
     if (!tree.nodes.empty()) collect(tree, 0, 0, first_level, last_level, out);

@@ -5,9 +5,19 @@
 #include "strahl/ch02/accel.hpp"
 #include "strahl/ch03/accel.hpp"
 #include "strahl/ch04/accel.hpp"
+#include "strahl/ch05/accel.hpp"
 #include <stdexcept>
 
 namespace strahl::race {
+
+namespace {
+ch05::sah_build_params sah(ch05::sah_method m, int bins) {
+    ch05::sah_build_params p;
+    p.method = m;
+    if (bins > 0) p.bins = bins;
+    return p;
+}
+}  // namespace
 
 std::vector<accel_entry> registered_accels(const registry_options& o) {
     std::vector<accel_entry> list = {
@@ -25,8 +35,15 @@ std::vector<accel_entry> registered_accels(const registry_options& o) {
          [] { return ch04::make_accel(true, ch04::split_method::object_median); }},
         {"ch04-spatial", "04", "BVH, spatial median split, over plain triangles",
          [] { return ch04::make_accel(false, ch04::split_method::spatial_median); }},
-        // Later chapters register here, one line each, e.g.
-        // {"ch05-sah", "05", "BVH, SAH split", [] { return ch05::make_accel(false); }},
+        {"ch05-sweep", "05", "BVH, full SAH sweep over sorted centroids, chapter 04's traversal",
+         [] { return ch05::make_accel(false, sah(ch05::sah_method::sweep, 0)); }},
+        {"ch05-binned16", "05", "BVH, binned SAH with 16 bins per axis, chapter 04's traversal",
+         [] { return ch05::make_accel(false, sah(ch05::sah_method::binned, 16)); }},
+        {"ch05-binned16-virtual", "05", "the same over chapter 01's virtual objects",
+         [] { return ch05::make_accel(true, sah(ch05::sah_method::binned, 16)); }},
+        {"ch05-binned16-fast", "05", "the same tree, chapter 05's faster scalar traversal (children tested at the parent)",
+         [] { return ch05::make_accel(false, sah(ch05::sah_method::binned, 16), ch05::walk_kind::fast); }},
+        // Later chapters register here, one line each.
     };
     if (embree_available()) {
         using q = embree_config::quality;

@@ -4,7 +4,9 @@
 #pragma once
 #include "strahl/accel.hpp"
 #include "strahl/ch04/bvh.hpp"
+#include <functional>
 #include <memory>
+#include <string>
 
 namespace strahl::ch04 {
 
@@ -16,5 +18,10 @@ public:
     virtual const bvh& tree() const = 0;
 };
 std::unique_ptr<bvh_accel_base> make_bvh_accel(bool virtual_primitives, const bvh_build_params& params = {});
+
+// Any builder that turns boxes and centroids into this flat tree (chapters 05 and 06 bring theirs), behind
+// the same traversal: name is the race's row name, "-virtual" is appended for the virtual objects.
+using bvh_builder = std::function<bvh(std::span<const aabb> boxes, std::span<const vec3> centroids)>;
+std::unique_ptr<bvh_accel_base> make_bvh_accel(bool virtual_primitives, std::string name, bvh_builder builder);
 
 }  // namespace strahl::ch04

@@ -84,6 +84,12 @@ struct split_result {
 };
 split_result partition_split(std::span<std::uint32_t> ids, std::span<const vec3> centroids, split_method m);
 
+// The SAH cost of the tree (chapter 05 defines and explains it), normalised by the root's area:
+//   C_T * sum over inner nodes of A(n)/A(root) + C_I * sum over leaves of N(l) A(l)/A(root).
+// Here so that every BVH row in the race, medians included, reports it. 0 for an empty tree; a root of
+// area 0 counts every ratio as 1.
+double sah_tree_cost(const bvh& tree, float c_traversal, float c_intersection);
+
 // The boxes of the nodes at depths [first_level, last_level] (the root is depth 0), for drawing.
 struct level_box {
     int level;

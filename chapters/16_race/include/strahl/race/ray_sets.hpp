@@ -1,38 +1,18 @@
-// The rays everyone shares. Generated identically for every structure (and written to files, ray_io.hpp),
-// so the race compares like with like:
-//   primary: the scene's camera, one ray per pixel centre, scanline order, row 0 at the top;
-//   diffuse: one per primary hit, in pixel order, leaving the hit point (computed from the barycentrics)
-//            off the surface along the geometric normal turned towards the incoming ray, its direction
-//            cosine-distributed around that normal from one PCG32 stream seeded with `seed`;
-//   shadow:  one per primary hit, in pixel order, towards the scene's first point light, tmax just short
-//            of the light (an any-hit query).
-// The hits they start from come from an exact structure (brute force, or anything equal to it).
+// The race's ray sets are chapter 01's (strahl/ch01/ray_sets.hpp): the same primary, diffuse and shadow
+// rays for every structure, in every program.
 #pragma once
-#include "strahl/accel.hpp"
-#include <cstdint>
-#include <string>
-#include <vector>
+#include "strahl/ch01/ray_sets.hpp"
 
 namespace strahl::race {
 
-enum class ray_kind { primary, diffuse, shadow };
-ray_kind parse_ray_kind(const std::string& name);  // "primary" | "diffuse" | "shadow"; else invalid_argument
-std::string to_string(ray_kind k);
-inline bool is_any_hit(ray_kind k) { return k == ray_kind::shadow; }
-
-std::vector<ray> primary_rays(const scene& s, int width, int height);
-
-// Throws std::invalid_argument when the scene has no point light.
-std::vector<ray> secondary_rays(ray_kind kind, const scene& s, std::span<const ray> primary,
-                                std::span<const hit> primary_hits, std::uint64_t seed = 1);
-
-// Traces rays through an accel on `threads` threads (<= 1: on this thread), in chunks of about 1024
-// consecutive rays aligned to a.batch_alignment(); the results are the same whatever the thread count.
-void trace_closest(const accel& a, std::span<const ray> rays, std::span<hit> hits, int threads = 1);
-void trace_any(const accel& a, std::span<const ray> rays, std::span<std::uint8_t> blocked, int threads = 1);
-
-// Convenience: one ray set of a kind for a scene and image size, primary hits found with `exact`.
-std::vector<ray> make_rays(ray_kind kind, const scene& s, int width, int height, std::uint64_t seed,
-                           const accel& exact, int threads = 1);
+using ch01::is_any_hit;
+using ch01::make_rays;
+using ch01::parse_ray_kind;
+using ch01::primary_rays;
+using ch01::ray_kind;
+using ch01::secondary_rays;
+using ch01::to_string;
+using ch01::trace_any;
+using ch01::trace_closest;
 
 }  // namespace strahl::race

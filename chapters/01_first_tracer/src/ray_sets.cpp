@@ -1,11 +1,11 @@
-#include "strahl/race/ray_sets.hpp"
+#include "strahl/ch01/ray_sets.hpp"
 #include "strahl/ch01/world.hpp"
 #include "strahl/parallel.hpp"
 #include "strahl/rng.hpp"
 #include "strahl/sampling.hpp"
 #include <stdexcept>
 
-namespace strahl::race {
+namespace strahl::ch01 {
 
 ray_kind parse_ray_kind(const std::string& name) {
     if (name == "primary") return ray_kind::primary;
@@ -98,4 +98,4 @@ std::vector<ray> make_rays(ray_kind kind, const scene& s, int width, int height,
     return secondary_rays(kind, s, primary, hits, seed);
 }
 
-}  // namespace strahl::race
+}  // namespace strahl::ch01

@@ -1,0 +1,227 @@
+// ch05: the surface area heuristic. Builds chapter 04's median BVH, the full-sweep SAH BVH and binned SAH
+// BVHs with 4 to 256 bins over the teapot in a stadium, the bunny and Sponza (when the shared meshes are
+// there), traces the same primary and diffuse rays through each, and prints and plots the trade: build
+// time against SAH cost against Mrays/s. Every tree's hits are checked against the median tree's.
+#include "strahl/ch01/ray_sets.hpp"
+#include "strahl/ch05/accel.hpp"
+#include "strahl/parallel.hpp"
+#include "strahl/plot.hpp"
+#include "strahl/procedural.hpp"
+#include "strahl/program.hpp"
+#include "strahl/timer.hpp"
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+#ifndef STRAHL_TRACK
+#define STRAHL_TRACK "solutions"
+#endif
+
+namespace {
+
+using namespace strahl;
+using namespace strahl::ch05;
+namespace fs = std::filesystem;
+
+struct options {
+    int width = 192, height = 144, repeats = 3;
+    std::vector<int> bins;
+    sah_costs costs;
+    fs::path folder{"out/05_sah"};
+    bool user_named = false, force = false;
+};
+
+struct variant {
+    std::string label;  // "median", "sweep", "binned16", ...
+    int bins = 0;       // 0 for the median and the sweep
+    double build_ms = 0, sah = 0, primary_mrays = 0, diffuse_mrays = 0, boxes_per_ray = 0, tris_per_ray = 0;
+    std::size_t nodes = 0, differing = 0;
+    int depth = 0;
+};
+
+// The median of `repeats` timed runs of f (after one untimed warm-up), in milliseconds.
+template <class F>
+double median_ms(int repeats, F&& f) {
+    f();
+    std::vector<double> ms;
+    for (int i = 0; i < repeats; ++i) {
+        const timer t;
+        f();
+        ms.push_back(t.milliseconds());
+    }
+    return median(ms);
+}
+
+bool same_hits(const std::vector<hit>& a, const std::vector<hit>& b, std::size_t& differing) {
+    differing = 0;
+    for (std::size_t i = 0; i < a.size(); ++i)
+        differing += a[i].prim != b[i].prim || std::memcmp(&a[i].t, &b[i].t, sizeof(float)) != 0;
+    return differing == 0;
+}
+
+std::vector<variant> run_scene(const scene& s, const options& o) {
+    std::printf("%s: %zu triangles; %d x %d primary rays and as many diffuse; build and trace on one thread, "
+                "median of %d\n",
+                s.name.c_str(), s.mesh.triangle_count(), o.width, o.height, o.repeats);
+    // The rays: primary from the camera, diffuse from their hits (chapter 01's ray sets), with the
+    // median BVH as the exact reference the other trees must agree with.
+    const auto reference = ch04::make_bvh_accel(false);
+    reference->build(s);
+    const std::vector<ray> primary = ch01::primary_rays(s, o.width, o.height);
+    std::vector<hit> ref_primary(primary.size());
+    reference->intersect(primary, ref_primary);
+    const std::vector<ray> diffuse = ch01::secondary_rays(ch01::ray_kind::diffuse, s, primary, ref_primary, 1);
+    std::vector<hit> ref_diffuse(diffuse.size());
+    reference->intersect(diffuse, ref_diffuse);
+
+    std::vector<variant> rows;
+    const auto measure = [&](variant v, const std::function<std::unique_ptr<ch04::bvh_accel_base>()>& make) {
+        std::unique_ptr<ch04::bvh_accel_base> a;
+        v.build_ms = median_ms(o.repeats, [&] { a = make(), a->build(s); });
+        const ch04::bvh& t = a->tree();
+        v.sah = ch04::sah_tree_cost(t, o.costs.traversal, o.costs.intersection);
+        v.nodes = t.nodes.size();
+        v.depth = t.stats.depth;
+        std::vector<hit> hits(primary.size()), dhits(diffuse.size());
+        const double p_ms = median_ms(o.repeats, [&] { a->intersect(primary, hits); });
+        std::size_t d1 = 0, d2 = 0;
+        same_hits(hits, ref_primary, d1);
+        const double d_ms = median_ms(o.repeats, [&] { a->intersect(diffuse, dhits); });
+        same_hits(dhits, ref_diffuse, d2);
+        v.differing = d1 + d2;
+        v.primary_mrays = double(primary.size()) / p_ms * 1e-3;
+        v.diffuse_mrays = double(diffuse.size()) / d_ms * 1e-3;
+        const auto counts = a->intersect_counted(diffuse, dhits);
+        v.boxes_per_ray = counts ? counts->per_ray(counts->box_tests) : 0.0;
+        v.tris_per_ray = counts ? counts->per_ray(counts->prim_tests) : 0.0;
+        std::printf("  %-10s %10.2f %8.2f %8zu %5d %9.2f %9.2f %9.1f %9.1f %6zu\n", v.label.c_str(), v.build_ms, v.sah,
+                    v.nodes, v.depth, v.primary_mrays, v.diffuse_mrays, v.boxes_per_ray, v.tris_per_ray, v.differing);
+        std::fflush(stdout);
+        rows.push_back(v);
+    };
+    std::printf("  %-10s %10s %8s %8s %5s %9s %9s %9s %9s %6s\n", "tree", "build ms", "SAH", "nodes", "depth",
+                "primary", "diffuse", "boxes/ray", "tris/ray", "differ");
+    std::printf("  %-10s %10s %8s %8s %5s %9s %9s %9s %9s %6s\n", "", "", "", "", "", "Mrays/s", "Mrays/s",
+                "(diffuse)", "(diffuse)", "");
+    measure({"median"}, [] { return ch04::make_bvh_accel(false); });
+    sah_build_params p;
+    p.costs = o.costs;
+    p.method = sah_method::sweep;
+    measure({"sweep"}, [p] { return make_accel(false, p); });
+    p.method = sah_method::binned;
+    for (const int k : o.bins) {
+        p.bins = k;
+        variant v{"binned" + std::to_string(k)};
+        v.bins = k;
+        measure(v, [p] { return make_accel(false, p); });
+    }
+    return rows;
+}
+
+void write_outputs(const std::vector<std::pair<std::string, std::vector<variant>>>& all, const options& o) {
+    const fs::path csv = o.folder / "bins.csv", trade = o.folder / "build_vs_trace.svg",
+                   cost = o.folder / "bins_vs_sah.svg";
+    for (const fs::path& p : {csv, trade, cost}) prepare_output(p, o.user_named, o.force);
+    std::ostringstream text;
+    text << "scene,tree,bins,build_ms,sah_cost,nodes,depth,primary_mrays_s,diffuse_mrays_s,boxes_per_ray,"
+            "tris_per_ray,differing\n";
+    plot tp{"Build time against trace speed (diffuse rays, one thread)", "build time [ms]",
+            "diffuse rays [Mrays/s]", true, false, {}};
+    plot cp{"SAH cost against the number of bins (dashed: the full sweep)", "bins per axis", "SAH cost (C_T = C_I = 1)",
+            true, false, {}};
+    for (const auto& [name, rows] : all) {
+        plot_series t{name, {}, {}, true, {}}, c{name, {}, {}, true, {}}, sweep{name + ": sweep", {}, {}, true, {}};
+        for (const variant& v : rows) {
+            text << name << ',' << v.label << ',' << v.bins << ',' << v.build_ms << ',' << v.sah << ',' << v.nodes
+                 << ',' << v.depth << ',' << v.primary_mrays << ',' << v.diffuse_mrays << ',' << v.boxes_per_ray
+                 << ',' << v.tris_per_ray << ',' << v.differing << '\n';
+            t.x.push_back(v.build_ms);
+            t.y.push_back(v.diffuse_mrays);
+            t.point_labels.push_back(v.bins ? std::to_string(v.bins) : v.label);
+            if (v.bins) c.x.push_back(v.bins), c.y.push_back(v.sah);
+        }
+        for (const variant& v : rows)
+            if (v.label == "sweep" && !c.x.empty()) sweep.x = {c.x.front(), c.x.back()}, sweep.y = {v.sah, v.sah};
+        tp.series.push_back(t);
+        cp.series.push_back(c);
+        if (!sweep.x.empty()) cp.series.push_back(sweep);
+    }
+    std::ofstream f(csv);
+    if (!(f << text.str())) throw std::runtime_error("cannot write " + csv.string());
+    write_svg(trade, to_svg(tp));
+    write_svg(cost, to_svg(cp));
+    std::printf("wrote %s, %s, %s\n", csv.string().c_str(), trade.string().c_str(), cost.string().c_str());
+}
+
+int run(int argc, const char* const* argv) {
+    cli args("ch05", "Chapter 05, the surface area heuristic (" STRAHL_TRACK "): median, full-sweep and binned "
+             "SAH BVHs on the same rays; build time, SAH cost and Mrays/s per number of bins, as a table, a CSV "
+             "file and two plots.");
+    args.option("scene", "NAME", "all", "stadium, bunny, sponza, teapot or all (all: stadium, bunny, sponza)")
+        .option("bins", "LIST", "4,8,16,32,64,128,256", "comma-separated bin counts, each in [2, 256]")
+        .option("costs", "CT,CI", "1,1", "the SAH's traversal and intersection costs")
+        .option("width", "N", "", "primary rays per row (default 192, 96 with --quick)")
+        .option("height", "N", "", "rows (default 3/4 of the width)")
+        .option("repeats", "K", "3", "timed runs per measurement after a warm-up; the median is reported")
+        .option("out", "DIR", "", "write the CSV file and the plots into DIR/ (default out/05_sah/)")
+        .flag("force", "replace existing files in a folder named with --out")
+        .flag("quick", "the teapot in a stadium only, 96 x 72 rays, bins 4, 16, 64");
+    if (!args.parse(argc, argv)) return 0;
+    const bool quick = args.has("quick");
+    const thread_limit one(1);  // the chapter's figures are single-threaded, as in the race's table
+    options o;
+    o.width = args.has("width") ? args.get_int("width") : (quick ? 96 : 192);
+    o.height = args.has("height") ? args.get_int("height") : o.width * 3 / 4;
+    o.repeats = args.get_int("repeats");
+    if (o.width < 1 || o.width > 4096 || o.height < 1 || o.height > 4096)
+        throw usage_error("--width and --height must lie in [1, 4096]");
+    if (o.repeats < 1 || o.repeats > 100) throw usage_error("--repeats must lie in [1, 100]");
+    std::string list = quick && !args.has("bins") ? "4,16,64" : args.get("bins");
+    std::stringstream in(list);
+    for (std::string item; std::getline(in, item, ',');) {
+        char* end = nullptr;
+        const long k = std::strtol(item.c_str(), &end, 10);
+        if (item.empty() || *end != 0 || k < 2 || k > 256)
+            throw usage_error("--bins wants numbers in [2, 256], not '" + item + "'");
+        o.bins.push_back(int(k));
+    }
+    float ct = 0, ci = 0;
+    char extra = 0;
+    if (std::sscanf(args.get("costs").c_str(), "%f,%f%c", &ct, &ci, &extra) != 2 || !(ct > 0) || !(ci > 0) ||
+        !std::isfinite(ct) || !std::isfinite(ci))
+        throw usage_error("--costs wants two positive numbers CT,CI, not '" + args.get("costs") + "'");
+    o.costs = {ct, ci};
+    if (args.has("out")) o.folder = args.get("out"), o.user_named = true;
+    o.force = args.has("force");
+
+    const std::string which = quick ? "stadium" : args.get("scene");
+    if (which != "all" && which != "teapot" && which != "stadium" && which != "bunny" && which != "sponza")
+        throw usage_error("--scene must be stadium, bunny, sponza, teapot or all, not '" + which + "'");
+    std::vector<std::pair<std::string, std::vector<variant>>> all;
+    if (which == "teapot") all.emplace_back("teapot", run_scene(builtin_scene("teapot"), o));
+    if (which == "all" || which == "stadium") all.emplace_back("stadium", run_scene(builtin_scene("teapot_stadium"), o));
+    for (const char* mesh : {"bunny", "sponza"}) {
+        if (which != "all" && which != mesh) continue;
+        const fs::path p = fs::path(STRAHL_SHARED_SCENES) / (std::string(mesh) + (mesh[0] == 'b' ? ".ply" : ".obj"));
+        std::error_code ec;
+        if (!fs::exists(p, ec)) {
+            std::printf("%s: skipped, %s is not there (the course's shared meshes)\n", mesh, p.string().c_str());
+            continue;
+        }
+        scene s = load_scene(p);
+        s.name = mesh;
+        all.emplace_back(mesh, run_scene(s, o));
+    }
+    write_outputs(all, o);
+    std::printf("against Embree on the same rays: build/release/bin/race --accels ch04-median,ch05-sweep,"
+                "ch05-binned16,embree-medium\n");
+    return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    const bool exercises = std::string(STRAHL_TRACK) == "exercises";
+    return guarded_main(exercises ? "ch05_exercise" : "ch05", run, argc, argv);
+}

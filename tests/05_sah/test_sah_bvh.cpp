@@ -1,0 +1,163 @@
+// Chapter 05 beyond the exercises (0 points): the SAH cost of a hand-made tree, the builders' trees, and
+// exactness against brute force for both builders, both traversals and both primitive sets, on scenes and
+// rays made to break them.
+#include "strahl/ch01/primitive_sets.hpp"
+#include "strahl/ch05/accel.hpp"
+#include "strahl/procedural.hpp"
+#include "bvh_rays.hpp"
+#include "exactness.hpp"
+#include <catch2/catch.hpp>
+
+using namespace strahl;
+using namespace strahl::ch05;
+
+using test::copies;
+using test::mesh_only;
+
+namespace {
+
+ch04::bvh_node node(vec3 lo, vec3 hi, std::uint32_t offset, std::uint16_t count) {
+    ch04::bvh_node n{};
+    for (int a = 0; a < 3; ++a) n.bmin[a] = lo[a], n.bmax[a] = hi[a];
+    n.offset = offset;
+    n.count = count;
+    return n;
+}
+
+std::vector<sah_build_params> all_params() {
+    std::vector<sah_build_params> list;
+    sah_build_params p;
+    p.method = sah_method::sweep;
+    list.push_back(p);
+    p.method = sah_method::binned;
+    for (const int k : {2, 16, 256}) p.bins = k, list.push_back(p);
+    p.bins = 8, p.max_leaf = 1, list.push_back(p);
+    return list;
+}
+
+// Every builder, both traversals, both primitive sets: brute force's answers, bit for bit.
+void check_exact(const scene& s, std::size_t n_rays) {
+    for (const sah_build_params& p : all_params())
+        for (const walk_kind w : {walk_kind::chapter04, walk_kind::fast})
+            for (const bool is_virtual : {false, true}) {
+                if (is_virtual && w == walk_kind::chapter04 && p.bins != 16) continue;  // keep the test quick
+                const auto a = make_accel(is_virtual, p, w);
+                a->build(s);
+                INFO(a->name() << " on " << s.mesh.triangle_count() << " triangles");
+                const ch04::bvh& t = a->tree();
+                CHECK(t.nodes.size() <= std::max<std::size_t>(1, 2 * t.prim_ids.size()) - 1);
+                CHECK(t.stats.depth <= ch04::bvh_max_depth);
+                CHECK(test::disagreements_with_brute_force(*a, s.mesh, test::nasty_rays(t, n_rays, 11)) == 0);
+            }
+}
+
+}  // namespace
+
+TEST_CASE("ch05 SAH: the cost of a hand-computed tree matches the formula", "[ch05]") {
+    // Root [0,2]x[0,1]x[0,1] (area 10) over two unit cubes (area 6 each) with 1 and 2 primitives.
+    ch04::bvh t;
+    t.nodes = {node(vec3(0), vec3(2, 1, 1), 2, 0), node(vec3(0), vec3(1), 0, 1), node(vec3(1, 0, 0), vec3(2, 1, 1), 1, 2)};
+    t.prim_ids = {0, 1, 2};
+    CHECK(tree_cost(t) == Approx(1.0 + 0.6 * 1 + 0.6 * 2));
+    CHECK(tree_cost(t, {2.0f, 3.0f}) == Approx(2.0 + 3.0 * (0.6 + 1.2)));
+    // One more level: the right leaf split into two half cubes (area 4 each), 1 primitive each.
+    t.nodes[2] = node(vec3(1, 0, 0), vec3(2, 1, 1), 4, 0);
+    t.nodes.push_back(node(vec3(1, 0, 0), vec3(1.5f, 1, 1), 1, 1));
+    t.nodes.push_back(node(vec3(1.5f, 0, 0), vec3(2, 1, 1), 2, 1));
+    CHECK(tree_cost(t) == Approx(1.0 + 0.6 + 0.6 * 1 + 0.4 * 1 + 0.4 * 1));
+    CHECK(tree_cost(ch04::bvh{}) == 0.0);
+}
+
+TEST_CASE("ch05 SAH: two clusters are split apart, and leaves end where splitting costs more", "[ch05]") {
+    triangle_mesh m;
+    for (const float x : {0.0f, 0.1f, 10.0f, 10.1f}) {
+        const auto base = std::uint32_t(m.positions.size());
+        m.positions.insert(m.positions.end(), {vec3(x, 0, 0), vec3(x + 0.05f, 0, 0), vec3(x, 0.05f, 0.05f)});
+        m.indices.push_back(uvec3(base, base + 1, base + 2));
+    }
+    for (const sah_build_params& p : all_params()) {
+        const auto a = make_accel(false, p);
+        a->build(mesh_only(m));
+        const ch04::bvh& t = a->tree();
+        REQUIRE(t.nodes.size() >= 3);
+        // The root's left child holds exactly the two triangles near x = 0.
+        const ch04::bvh_node& left = t.nodes[1];
+        CHECK(left.bmax[0] < 1.0f);
+        CHECK(t.nodes[t.nodes[0].offset].bmin[0] > 9.0f);
+    }
+    // C_T large against C_I: splitting never pays, one leaf holds everything (max_leaf permitting).
+    sah_build_params lazy;
+    lazy.costs = {100.0f, 1.0f};
+    const auto a = make_accel(false, lazy);
+    a->build(mesh_only(m));
+    CHECK(a->tree().nodes.size() == 1);
+    CHECK(tree_cost(a->tree(), lazy.costs) == Approx(4.0));
+}
+
+TEST_CASE("ch05 SAH: lower cost than the median split; the sweep no worse than bins", "[ch05]") {
+    const scene s = teapot_scene(4);
+    const auto median = ch04::make_bvh_accel(false);
+    median->build(s);
+    sah_build_params sweep;
+    sweep.method = sah_method::sweep;
+    const auto swept = make_accel(false, sweep);
+    swept->build(s);
+    const auto binned = make_accel(false);
+    binned->build(s);
+    const double cm = tree_cost(median->tree()), cs = tree_cost(swept->tree()), cb = tree_cost(binned->tree());
+    INFO("median " << cm << ", sweep " << cs << ", binned16 " << cb);
+    CHECK(cs < 0.9 * cm);
+    CHECK(cb < 0.95 * cm);
+    CHECK(cs <= cb * 1.02);  // greedy, so not a strict order, but close
+    // The accel reports the same cost (C_T = C_I = 1) to the race.
+    CHECK(*swept->sah_cost() == Approx(cs));
+    // Leaves within max_leaf, all primitives exactly once.
+    const ch04::bvh& t = binned->tree();
+    std::vector<int> seen(s.mesh.triangle_count(), 0);
+    for (const ch04::bvh_node& n : t.nodes)
+        if (n.is_leaf()) {
+            CHECK(n.count <= 8);
+            for (std::uint32_t k = n.offset; k < n.offset + n.count; ++k) ++seen[t.prim_ids[k]];
+        }
+    CHECK(std::count(seen.begin(), seen.end(), 1) == std::ptrdiff_t(seen.size()));
+}
+
+TEST_CASE("ch05 SAH: both builders and traversals equal brute force on the teapot and a soup", "[ch05][adversarial]") {
+    check_exact(teapot_scene(3), 600);
+    check_exact(mesh_only(random_soup(1200, 3, 0.1f)), 600);
+}
+
+TEST_CASE("ch05 SAH: planar, one triangle, empty, identical and collinear triangles", "[ch05][adversarial]") {
+    triangle_mesh flat = random_soup(600, 5, 0.1f);
+    for (vec3& p : flat.positions) p.z = 0.5f;  // every box of zero thickness on z
+    check_exact(mesh_only(flat), 600);
+    check_exact(mesh_only(copies(1, vec3(0, 0, 0), vec3(1, 0, 0), vec3(0, 1, 0))), 300);
+    check_exact(mesh_only(triangle_mesh{}), 100);
+    check_exact(mesh_only(copies(3000, vec3(0, 0, 0), vec3(1, 0, 0), vec3(0, 1, 0))), 200);  // all centroids equal
+    triangle_mesh line;  // centroids on one line, boxes overlapping
+    for (int i = 0; i < 500; ++i) {
+        const float x = float(i) * 0.01f;
+        const auto b = std::uint32_t(line.positions.size());
+        line.positions.insert(line.positions.end(), {vec3(x, 0, 0), vec3(x + 1.0f, 0, 0), vec3(x, 1.0f, 0.5f)});
+        line.indices.push_back(uvec3(b, b + 1, b + 2));
+    }
+    check_exact(mesh_only(line), 400);
+}
+
+TEST_CASE("ch05 SAH: centroids in a geometric series keep the depth bounded", "[ch05][adversarial]") {
+    // Each split peels one triangle off the rest: without the depth limit, a tree as deep as the input.
+    triangle_mesh m;
+    float x = 1.0f;
+    for (int i = 0; i < 400; ++i, x *= 0.5f) {
+        const auto b = std::uint32_t(m.positions.size());
+        const float w = x * 0.01f;
+        m.positions.insert(m.positions.end(), {vec3(x, 0, 0), vec3(x + w, 0, 0), vec3(x, w, 0)});
+        m.indices.push_back(uvec3(b, b + 1, b + 2));
+    }
+    for (const sah_build_params& p : all_params()) {
+        const auto a = make_accel(false, p, walk_kind::fast);
+        a->build(mesh_only(m));
+        CHECK(a->tree().stats.depth <= ch04::bvh_max_depth);
+        CHECK(test::disagreements_with_brute_force(*a, m, test::nasty_rays(a->tree(), 200, 3)) == 0);
+    }
+}
