@@ -6,6 +6,7 @@
 #include "strahl/ch03/accel.hpp"
 #include "strahl/ch04/accel.hpp"
 #include "strahl/ch05/accel.hpp"
+#include "strahl/ch06/accel.hpp"
 #include <stdexcept>
 
 namespace strahl::race {
@@ -15,6 +16,12 @@ ch05::sah_build_params sah(ch05::sah_method m, int bins) {
     ch05::sah_build_params p;
     p.method = m;
     if (bins > 0) p.bins = bins;
+    return p;
+}
+ch06::refine_params refined(ch06::start_tree start, ch06::refine_method method) {
+    ch06::refine_params p;
+    p.start = start;
+    p.method = method;
     return p;
 }
 }  // namespace
@@ -43,6 +50,12 @@ std::vector<accel_entry> registered_accels(const registry_options& o) {
          [] { return ch05::make_accel(true, sah(ch05::sah_method::binned, 16)); }},
         {"ch05-binned16-fast", "05", "the same tree, chapter 05's faster scalar traversal (children tested at the parent)",
          [] { return ch05::make_accel(false, sah(ch05::sah_method::binned, 16), ch05::walk_kind::fast); }},
+        {"ch06-median-rotated", "06", "chapter 04's median BVH refined by tree rotations (Kensler 2008)",
+         [] { return ch06::make_accel(false, refined(ch06::start_tree::median, ch06::refine_method::rotations)); }},
+        {"ch06-binned16-rotated", "06", "chapter 05's binned SAH BVH (16 bins) refined by tree rotations",
+         [] { return ch06::make_accel(false, refined(ch06::start_tree::binned16, ch06::refine_method::rotations)); }},
+        {"ch06-binned16-reinserted", "06", "chapter 05's binned SAH BVH (16 bins) refined by reinsertion (Bittner et al. 2013)",
+         [] { return ch06::make_accel(false, refined(ch06::start_tree::binned16, ch06::refine_method::reinsertion)); }},
         // Later chapters register here, one line each.
     };
     if (embree_available()) {

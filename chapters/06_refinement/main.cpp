@@ -1,0 +1,263 @@
+// ch06: refining a built BVH. Builds chapter 04's median tree and chapter 05's binned SAH tree (16 bins)
+// over the teapot in a stadium and the bunny (when the shared meshes are there), refines each by tree
+// rotations (Kensler 2008) and by reinsertion (Bittner, Hapala and Havran 2013) under growing iteration
+// budgets, and prints and plots the trade: SAH cost against refinement time; then traces the same primary
+// and diffuse rays through each start tree and each fully refined tree (Mrays/s before and after). Every
+// tree's hits are checked against the median tree's.
+#include "strahl/ch01/primitive_sets.hpp"
+#include "strahl/ch01/ray_sets.hpp"
+#include "strahl/ch06/accel.hpp"
+#include "strahl/parallel.hpp"
+#include "strahl/plot.hpp"
+#include "strahl/procedural.hpp"
+#include "strahl/program.hpp"
+#include "strahl/timer.hpp"
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+#ifndef STRAHL_TRACK
+#define STRAHL_TRACK "solutions"
+#endif
+
+namespace {
+
+using namespace strahl;
+using namespace strahl::ch06;
+namespace fs = std::filesystem;
+
+struct options {
+    int width = 192, height = 144, repeats = 3;
+    std::vector<int> rotation_budgets{1, 2, 4, 8, 64}, reinsertion_budgets{1, 4, 16, 64, 256};
+    fs::path folder{"out/06_refinement"};
+    bool user_named = false, force = false;
+};
+
+// One refinement: a start tree, a method (or none: the start tree itself), an iteration budget.
+struct row {
+    std::string scene, start, method;
+    int budget = 0, iterations = 0, depth = 0;
+    std::size_t moves = 0, nodes = 0, differing = 0;
+    double ms = 0, sah_before = 0, sah_after = 0, primary_mrays = 0, diffuse_mrays = 0;  // Mrays/s: 0 = not traced
+};
+
+// The median of `repeats` timed runs of f (after one untimed warm-up), in milliseconds.
+template <class F>
+double median_ms(int repeats, F&& f) {
+    f();
+    std::vector<double> ms;
+    for (int i = 0; i < repeats; ++i) {
+        const timer t;
+        f();
+        ms.push_back(t.milliseconds());
+    }
+    return median(ms);
+}
+
+std::size_t differing(const std::vector<hit>& a, const std::vector<hit>& b) {
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < a.size(); ++i)
+        n += a[i].prim != b[i].prim || std::memcmp(&a[i].t, &b[i].t, sizeof(float)) != 0;
+    return n;
+}
+
+std::vector<row> run_scene(const scene& s, const options& o) {
+    std::printf("%s: %zu triangles; %d x %d primary rays and as many diffuse; refine and trace on one thread, "
+                "median of %d\n",
+                s.name.c_str(), s.mesh.triangle_count(), o.width, o.height, o.repeats);
+    // The rays: primary from the camera, diffuse from their hits (chapter 01's ray sets), with chapter 04's
+    // median BVH as the exact reference every refined tree must agree with.
+    const auto reference = ch04::make_bvh_accel(false);
+    reference->build(s);
+    const std::vector<ray> primary = ch01::primary_rays(s, o.width, o.height);
+    std::vector<hit> ref_primary(primary.size());
+    reference->intersect(primary, ref_primary);
+    const std::vector<ray> diffuse = ch01::secondary_rays(ch01::ray_kind::diffuse, s, primary, ref_primary, 1);
+    std::vector<hit> ref_diffuse(diffuse.size());
+    reference->intersect(diffuse, ref_diffuse);
+    // What the builders see: one box and one centroid per triangle.
+    const ch01::triangle_set tris(s.mesh);
+    std::vector<aabb> boxes(tris.size());
+    std::vector<vec3> centroids(tris.size());
+    for (std::uint32_t i = 0; i < tris.size(); ++i) boxes[i] = tris.bounds(i), centroids[i] = boxes[i].centroid();
+
+    // Traces both ray sets through a given tree (chapter 04's traversal), the medians of the timings.
+    const auto trace = [&](row& r, const ch04::bvh& tree) {
+        const auto a = ch04::make_bvh_accel(false, "given", [&tree](auto, auto) { return tree; });
+        a->build(s);
+        std::vector<hit> hits(primary.size()), dhits(diffuse.size());
+        const double p_ms = median_ms(o.repeats, [&] { a->intersect(primary, hits); });
+        const double d_ms = median_ms(o.repeats, [&] { a->intersect(diffuse, dhits); });
+        r.differing = differing(hits, ref_primary) + differing(dhits, ref_diffuse);
+        r.primary_mrays = double(primary.size()) / p_ms * 1e-3;
+        r.diffuse_mrays = double(diffuse.size()) / d_ms * 1e-3;
+    };
+    const auto print = [](const row& r) {
+        std::printf("  %-9s %-11s %6d %6d %8zu %9.2f %8.2f %8.2f %5d", r.start.c_str(), r.method.c_str(), r.budget,
+                    r.iterations, r.moves, r.ms, r.sah_before, r.sah_after, r.depth);
+        if (r.primary_mrays > 0)
+            std::printf(" %9.2f %9.2f %6zu", r.primary_mrays, r.diffuse_mrays, r.differing);
+        std::printf("\n");
+        std::fflush(stdout);
+    };
+    std::printf("  %-9s %-11s %6s %6s %8s %9s %8s %8s %5s %9s %9s %6s\n", "start", "method", "budget", "iters",
+                "moves", "refine ms", "SAH", "SAH", "depth", "primary", "diffuse", "differ");
+    std::printf("  %-9s %-11s %6s %6s %8s %9s %8s %8s %5s %9s %9s %6s\n", "", "", "", "", "", "", "before", "after",
+                "", "Mrays/s", "Mrays/s", "");
+
+    std::vector<row> rows;
+    for (const start_tree st : {start_tree::median, start_tree::binned16}) {
+        const ch04::bvh start = st == start_tree::median ? ch04::build_bvh(boxes, centroids)
+                                                         : ch05::build_sah_bvh(boxes, centroids);
+        row base{s.name, to_string(st), "none"};
+        base.sah_before = base.sah_after = ch05::tree_cost(start);
+        base.nodes = start.nodes.size();
+        base.depth = start.stats.depth;
+        trace(base, start);
+        print(base);
+        rows.push_back(base);
+        for (const refine_method m : {refine_method::rotations, refine_method::reinsertion}) {
+            const std::vector<int>& budgets = m == refine_method::rotations ? o.rotation_budgets : o.reinsertion_budgets;
+            for (std::size_t b = 0; b < budgets.size(); ++b) {
+                refine_params p;
+                p.method = m;
+                p.max_iterations = budgets[b];
+                row r{s.name, to_string(st), to_string(m), budgets[b]};
+                ch04::bvh refined;
+                refine_stats stats;
+                r.ms = median_ms(o.repeats, [&] { refined = start, stats = refine(refined, p); });
+                r.iterations = stats.iterations;
+                r.moves = stats.moves;
+                r.sah_before = stats.before;
+                r.sah_after = stats.after;
+                r.nodes = refined.nodes.size();
+                r.depth = refined.stats.depth;
+                if (b + 1 == budgets.size()) trace(r, refined);  // the largest budget: traced
+                print(r);
+                rows.push_back(r);
+            }
+        }
+    }
+    return rows;
+}
+
+void write_outputs(const std::vector<row>& rows, const std::vector<std::string>& scenes, const options& o) {
+    const fs::path csv = o.folder / "refinement.csv";
+    std::vector<fs::path> files{csv};
+    for (const std::string& name : scenes) files.push_back(o.folder / ("sah_vs_time_" + name + ".svg"));
+    for (const fs::path& p : files) prepare_output(p, o.user_named, o.force);
+    std::ostringstream text;
+    text << "scene,start,method,budget,iterations,moves,refine_ms,sah_before,sah_after,nodes,depth,"
+            "primary_mrays_s,diffuse_mrays_s,differing\n";
+    for (const row& r : rows)
+        text << r.scene << ',' << r.start << ',' << r.method << ',' << r.budget << ',' << r.iterations << ','
+             << r.moves << ',' << r.ms << ',' << r.sah_before << ',' << r.sah_after << ',' << r.nodes << ','
+             << r.depth << ',' << r.primary_mrays << ',' << r.diffuse_mrays << ',' << r.differing << '\n';
+    std::ofstream f(csv);
+    if (!(f << text.str())) throw std::runtime_error("cannot write " + csv.string());
+    // One plot per scene: the SAH cost's reduction against refinement time (log scale), a series per start
+    // tree and method, a point per iteration budget.
+    for (std::size_t k = 0; k < scenes.size(); ++k) {
+        plot p{"SAH cost reduction against refinement time (" + scenes[k] + ", one thread; labels: budget)",
+               "refinement time [ms]", "SAH cost reduction [% of the start tree's]", true, false, {}};
+        for (const char* start : {"median", "binned16"})
+            for (const char* method : {"rotated", "reinserted"}) {
+                plot_series ser{std::string(start) + ", " + method, {}, {}, true, {}};
+                for (const row& r : rows) {
+                    if (r.scene != scenes[k] || r.start != start || r.method != method) continue;
+                    ser.x.push_back(r.ms);
+                    ser.y.push_back(100.0 * (1.0 - r.sah_after / r.sah_before));
+                    ser.point_labels.push_back(std::to_string(r.budget));
+                }
+                p.series.push_back(ser);
+            }
+        write_svg(files[k + 1], to_svg(p));
+    }
+    std::printf("wrote %s", csv.string().c_str());
+    for (std::size_t k = 1; k < files.size(); ++k) std::printf(", %s", files[k].string().c_str());
+    std::printf("\n");
+}
+
+std::vector<int> parse_budgets(const std::string& list, const char* option) {
+    std::vector<int> out;
+    std::stringstream in(list);
+    for (std::string item; std::getline(in, item, ',');) {
+        char* end = nullptr;
+        const long k = std::strtol(item.c_str(), &end, 10);
+        if (item.empty() || *end != 0 || k < 1 || k > 10000)
+            throw usage_error(std::string("--") + option + " wants numbers in [1, 10000], not '" + item + "'");
+        out.push_back(int(k));
+    }
+    if (out.empty()) throw usage_error(std::string("--") + option + " wants at least one number");
+    return out;
+}
+
+int run(int argc, const char* const* argv) {
+    cli args("ch06", "Chapter 06, refining a BVH (" STRAHL_TRACK "): tree rotations and reinsertion on chapter "
+             "04's median tree and chapter 05's binned SAH tree; SAH cost against refinement time per "
+             "iteration budget, and Mrays/s before and after, as a table, a CSV file and a plot per scene.");
+    args.option("scene", "NAME", "all", "stadium, bunny, teapot or all (all: stadium, bunny)")
+        .option("rotations", "LIST", "1,2,4,8,64", "comma-separated budgets of rotation passes")
+        .option("reinsertions", "LIST", "1,4,16,64,256", "comma-separated budgets of reinsertion batches")
+        .option("width", "N", "", "primary rays per row (default 192, 96 with --quick)")
+        .option("height", "N", "", "rows (default 3/4 of the width)")
+        .option("repeats", "K", "3", "timed runs per measurement after a warm-up; the median is reported")
+        .option("out", "DIR", "", "write the CSV file and the plots into DIR/ (default out/06_refinement/)")
+        .flag("force", "replace existing files in a folder named with --out")
+        .flag("quick", "the teapot in a stadium only, 96 x 72 rays, budgets 1,64 and 1,16,64");
+    if (!args.parse(argc, argv)) return 0;
+    const bool quick = args.has("quick");
+    const thread_limit one(1);  // the chapter's figures are single-threaded, as in the race's table
+    options o;
+    o.width = args.has("width") ? args.get_int("width") : (quick ? 96 : 192);
+    o.height = args.has("height") ? args.get_int("height") : o.width * 3 / 4;
+    o.repeats = args.get_int("repeats");
+    if (o.width < 1 || o.width > 4096 || o.height < 1 || o.height > 4096)
+        throw usage_error("--width and --height must lie in [1, 4096]");
+    if (o.repeats < 1 || o.repeats > 100) throw usage_error("--repeats must lie in [1, 100]");
+    o.rotation_budgets = parse_budgets(quick && !args.has("rotations") ? "1,64" : args.get("rotations"), "rotations");
+    o.reinsertion_budgets =
+        parse_budgets(quick && !args.has("reinsertions") ? "1,16,64" : args.get("reinsertions"), "reinsertions");
+    if (args.has("out")) o.folder = args.get("out"), o.user_named = true;
+    o.force = args.has("force");
+
+    const std::string which = quick ? "stadium" : args.get("scene");
+    if (which != "all" && which != "teapot" && which != "stadium" && which != "bunny")
+        throw usage_error("--scene must be stadium, bunny, teapot or all, not '" + which + "'");
+    std::vector<row> rows;
+    std::vector<std::string> scenes;
+    const auto add = [&](const std::string& name, const scene& s) {
+        const std::vector<row> r = run_scene(s, o);
+        rows.insert(rows.end(), r.begin(), r.end());
+        scenes.push_back(name);
+    };
+    if (which == "teapot") add("teapot", builtin_scene("teapot"));
+    if (which == "all" || which == "stadium") {
+        scene s = builtin_scene("teapot_stadium");
+        s.name = "stadium";
+        add("stadium", s);
+    }
+    if (which == "all" || which == "bunny") {
+        const fs::path p = fs::path(STRAHL_SHARED_SCENES) / "bunny.ply";
+        std::error_code ec;
+        if (!fs::exists(p, ec)) {
+            std::printf("bunny: skipped, %s is not there (the course's shared meshes)\n", p.string().c_str());
+        } else {
+            scene s = load_scene(p);
+            s.name = "bunny";
+            add("bunny", s);
+        }
+    }
+    write_outputs(rows, scenes, o);
+    std::printf("an LBVH start tree comes with chapter 07; against Embree on the same rays: build/release/bin/race "
+                "--accels ch05-binned16,ch06-binned16-rotated,ch06-binned16-reinserted,embree-medium\n");
+    return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    const bool exercises = std::string(STRAHL_TRACK) == "exercises";
+    return guarded_main(exercises ? "ch06_exercise" : "ch06", run, argc, argv);
+}
