@@ -40,26 +40,6 @@ struct variant {
     int depth = 0;
 };
 
-// The median of `repeats` timed runs of f (after one untimed warm-up), in milliseconds.
-template <class F>
-double median_ms(int repeats, F&& f) {
-    f();
-    std::vector<double> ms;
-    for (int i = 0; i < repeats; ++i) {
-        const timer t;
-        f();
-        ms.push_back(t.milliseconds());
-    }
-    return median(ms);
-}
-
-bool same_hits(const std::vector<hit>& a, const std::vector<hit>& b, std::size_t& differing) {
-    differing = 0;
-    for (std::size_t i = 0; i < a.size(); ++i)
-        differing += a[i].prim != b[i].prim || std::memcmp(&a[i].t, &b[i].t, sizeof(float)) != 0;
-    return differing == 0;
-}
-
 std::vector<variant> run_scene(const scene& s, const options& o) {
     std::printf("%s: %zu triangles; %d x %d primary rays and as many diffuse; build and trace on one thread, "
                 "median of %d\n",
@@ -85,11 +65,8 @@ std::vector<variant> run_scene(const scene& s, const options& o) {
         v.depth = t.stats.depth;
         std::vector<hit> hits(primary.size()), dhits(diffuse.size());
         const double p_ms = median_ms(o.repeats, [&] { a->intersect(primary, hits); });
-        std::size_t d1 = 0, d2 = 0;
-        same_hits(hits, ref_primary, d1);
         const double d_ms = median_ms(o.repeats, [&] { a->intersect(diffuse, dhits); });
-        same_hits(dhits, ref_diffuse, d2);
-        v.differing = d1 + d2;
+        v.differing = hits_differing(hits, ref_primary) + hits_differing(dhits, ref_diffuse);
         v.primary_mrays = double(primary.size()) / p_ms * 1e-3;
         v.diffuse_mrays = double(diffuse.size()) / d_ms * 1e-3;
         const auto counts = a->intersect_counted(diffuse, dhits);
@@ -177,15 +154,7 @@ int run(int argc, const char* const* argv) {
     if (o.width < 1 || o.width > 4096 || o.height < 1 || o.height > 4096)
         throw usage_error("--width and --height must lie in [1, 4096]");
     if (o.repeats < 1 || o.repeats > 100) throw usage_error("--repeats must lie in [1, 100]");
-    std::string list = quick && !args.has("bins") ? "4,16,64" : args.get("bins");
-    std::stringstream in(list);
-    for (std::string item; std::getline(in, item, ',');) {
-        char* end = nullptr;
-        const long k = std::strtol(item.c_str(), &end, 10);
-        if (item.empty() || *end != 0 || k < 2 || k > 256)
-            throw usage_error("--bins wants numbers in [2, 256], not '" + item + "'");
-        o.bins.push_back(int(k));
-    }
+    o.bins = parse_int_list(quick && !args.has("bins") ? "4,16,64" : args.get("bins"), "bins", 2, 256);
     float ct = 0, ci = 0;
     char extra = 0;
     if (std::sscanf(args.get("costs").c_str(), "%f,%f%c", &ct, &ci, &extra) != 2 || !(ct > 0) || !(ci > 0) ||

@@ -42,26 +42,6 @@ struct row {
     double ms = 0, sah_before = 0, sah_after = 0, primary_mrays = 0, diffuse_mrays = 0;  // Mrays/s: 0 = not traced
 };
 
-// The median of `repeats` timed runs of f (after one untimed warm-up), in milliseconds.
-template <class F>
-double median_ms(int repeats, F&& f) {
-    f();
-    std::vector<double> ms;
-    for (int i = 0; i < repeats; ++i) {
-        const timer t;
-        f();
-        ms.push_back(t.milliseconds());
-    }
-    return median(ms);
-}
-
-std::size_t differing(const std::vector<hit>& a, const std::vector<hit>& b) {
-    std::size_t n = 0;
-    for (std::size_t i = 0; i < a.size(); ++i)
-        n += a[i].prim != b[i].prim || std::memcmp(&a[i].t, &b[i].t, sizeof(float)) != 0;
-    return n;
-}
-
 std::vector<row> run_scene(const scene& s, const options& o) {
     std::printf("%s: %zu triangles; %d x %d primary rays and as many diffuse; refine and trace on one thread, "
                 "median of %d\n",
@@ -89,7 +69,7 @@ std::vector<row> run_scene(const scene& s, const options& o) {
         std::vector<hit> hits(primary.size()), dhits(diffuse.size());
         const double p_ms = median_ms(o.repeats, [&] { a->intersect(primary, hits); });
         const double d_ms = median_ms(o.repeats, [&] { a->intersect(diffuse, dhits); });
-        r.differing = differing(hits, ref_primary) + differing(dhits, ref_diffuse);
+        r.differing = hits_differing(hits, ref_primary) + hits_differing(dhits, ref_diffuse);
         r.primary_mrays = double(primary.size()) / p_ms * 1e-3;
         r.diffuse_mrays = double(diffuse.size()) / d_ms * 1e-3;
     };
@@ -179,20 +159,6 @@ void write_outputs(const std::vector<row>& rows, const std::vector<std::string>&
     std::printf("\n");
 }
 
-std::vector<int> parse_budgets(const std::string& list, const char* option) {
-    std::vector<int> out;
-    std::stringstream in(list);
-    for (std::string item; std::getline(in, item, ',');) {
-        char* end = nullptr;
-        const long k = std::strtol(item.c_str(), &end, 10);
-        if (item.empty() || *end != 0 || k < 1 || k > 10000)
-            throw usage_error(std::string("--") + option + " wants numbers in [1, 10000], not '" + item + "'");
-        out.push_back(int(k));
-    }
-    if (out.empty()) throw usage_error(std::string("--") + option + " wants at least one number");
-    return out;
-}
-
 int run(int argc, const char* const* argv) {
     cli args("ch06", "Chapter 06, refining a BVH (" STRAHL_TRACK "): tree rotations and reinsertion on chapter "
              "04's median tree and chapter 05's binned SAH tree; SAH cost against refinement time per "
@@ -216,9 +182,9 @@ int run(int argc, const char* const* argv) {
     if (o.width < 1 || o.width > 4096 || o.height < 1 || o.height > 4096)
         throw usage_error("--width and --height must lie in [1, 4096]");
     if (o.repeats < 1 || o.repeats > 100) throw usage_error("--repeats must lie in [1, 100]");
-    o.rotation_budgets = parse_budgets(quick && !args.has("rotations") ? "1,64" : args.get("rotations"), "rotations");
+    o.rotation_budgets = parse_int_list(quick && !args.has("rotations") ? "1,64" : args.get("rotations"), "rotations", 1, 10000);
     o.reinsertion_budgets =
-        parse_budgets(quick && !args.has("reinsertions") ? "1,16,64" : args.get("reinsertions"), "reinsertions");
+        parse_int_list(quick && !args.has("reinsertions") ? "1,16,64" : args.get("reinsertions"), "reinsertions", 1, 10000);
     if (args.has("out")) o.folder = args.get("out"), o.user_named = true;
     o.force = args.has("force");
 

@@ -2,6 +2,7 @@
 #include "strahl/todo.hpp"
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -146,6 +147,21 @@ void prepare_output(const std::filesystem::path& file, bool user_named, bool for
                                  (ec ? ": " + ec.message() : std::string()));
     if (access(folder.c_str(), W_OK) != 0)
         throw std::runtime_error("cannot write into folder '" + folder.string() + "' (permission denied)");
+}
+
+std::vector<int> parse_int_list(const std::string& text, const std::string& name, int lo, int hi) {
+    std::vector<int> out;
+    std::stringstream in(text);
+    for (std::string item; std::getline(in, item, ',');) {
+        char* end = nullptr;
+        const long k = std::strtol(item.c_str(), &end, 10);
+        if (item.empty() || *end != 0 || k < lo || k > hi)
+            throw usage_error("--" + name + " wants numbers in [" + std::to_string(lo) + ", " + std::to_string(hi) +
+                              "], not '" + item + "'");
+        out.push_back(int(k));
+    }
+    if (out.empty()) throw usage_error("--" + name + " wants at least one number");
+    return out;
 }
 
 }  // namespace strahl

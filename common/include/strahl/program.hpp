@@ -54,4 +54,8 @@ int guarded_main(const char* program, int (*body)(int, const char* const*), int 
 // the course's to regenerate. Also fails early, with a clear message, when the folder cannot be written.
 void prepare_output(const std::filesystem::path& file, bool user_named, bool force);
 
+// A comma-separated list of integers in [lo, hi] for option --name ("4,16,64"); throws usage_error on
+// anything else, or on an empty list.
+std::vector<int> parse_int_list(const std::string& text, const std::string& name, int lo, int hi);
+
 }  // namespace strahl

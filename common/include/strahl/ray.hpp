@@ -1,6 +1,8 @@
 // A ray and the record of its closest hit, as every acceleration structure in the course exchanges them.
 #pragma once
 #include "strahl/math.hpp"
+#include <cstring>
+#include <span>
 
 namespace strahl {
 
@@ -32,6 +34,14 @@ struct hit {
 // structure, whatever order it visits triangles in, thereby reports exactly the hit brute force reports.
 inline bool closer(float t, std::uint32_t prim, const hit& best) {
     return t < best.t || (t == best.t && prim < best.prim);
+}
+
+// How many of two equally long hit lists differ in primitive or in t's bits (the programs' exactness check).
+inline std::size_t hits_differing(std::span<const hit> a, std::span<const hit> b) {
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < a.size() && i < b.size(); ++i)
+        n += a[i].prim != b[i].prim || std::memcmp(&a[i].t, &b[i].t, sizeof(float)) != 0;
+    return n;
 }
 
 }  // namespace strahl

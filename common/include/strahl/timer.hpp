@@ -29,4 +29,17 @@ inline double median(std::vector<double> samples) {
     return 0.5 * (upper + *std::max_element(samples.begin(), samples.begin() + mid));
 }
 
+// The median of `repeats` timed runs of f (after one untimed warm-up), in milliseconds.
+template <class F>
+double median_ms(int repeats, F&& f) {
+    f();
+    std::vector<double> ms;
+    for (int i = 0; i < repeats; ++i) {
+        const timer t;
+        f();
+        ms.push_back(t.milliseconds());
+    }
+    return median(ms);
+}
+
 }  // namespace strahl
