@@ -138,9 +138,7 @@ int run(int argc, const char* const* argv) {
                 r.chapter = e.chapter;
                 r.exact = a->exact();
                 r.ray_set = to_string(kind);
-                timer build;
-                a->build(s);
-                r.build_ms = build.milliseconds();
+                r.build_ms = measure_build(*a, s, rules);
                 r.memory_bytes = a->memory_bytes();
                 r.sah = a->sah_cost();
                 std::span<const ray> traced = rays;

@@ -6,6 +6,10 @@
 #include "strahl/procedural.hpp"
 #include "bvh_rays.hpp"
 #include "exactness.hpp"
+#include "test_support.hpp"
+#include "strahl/scene.hpp"
+#include <algorithm>
+#include <limits>
 #include <catch2/catch.hpp>
 
 using namespace strahl;
@@ -159,5 +163,89 @@ TEST_CASE("ch05 SAH: centroids in a geometric series keep the depth bounded", "[
         a->build(mesh_only(m));
         CHECK(a->tree().stats.depth <= ch04::bvh_max_depth);
         CHECK(test::disagreements_with_brute_force(*a, m, test::nasty_rays(a->tree(), 200, 3)) == 0);
+    }
+}
+
+namespace {
+
+// The boxes and centroids an accel hands its builder, for chapter 01's triangles.
+struct builder_input {
+    std::vector<aabb> boxes;
+    std::vector<vec3> centroids;
+    explicit builder_input(const triangle_mesh& m) {
+        const ch01::triangle_set set(m);
+        for (std::size_t i = 0; i < set.size(); ++i) boxes.push_back(set.bounds(i)), centroids.push_back(boxes[i].centroid());
+    }
+};
+
+// Node for node: the same boxes (compared as values: the two may differ in the sign of a zero), splits and
+// leaves; a leaf's primitives as a set (the two partitions leave them in different orders).
+void check_same_tree(const ch04::bvh& a, const ch04::bvh& b) {
+    REQUIRE(a.nodes.size() == b.nodes.size());
+    CHECK(a.loose == b.loose);
+    CHECK(a.stats.depth == b.stats.depth);
+    std::size_t differing = 0;
+    for (std::size_t i = 0; i < a.nodes.size(); ++i) {
+        const ch04::bvh_node &x = a.nodes[i], &y = b.nodes[i];
+        bool same = x.count == y.count && x.offset == y.offset && (x.count > 0 || x.axis == y.axis);
+        for (int k = 0; k < 3; ++k) same = same && x.bmin[k] == y.bmin[k] && x.bmax[k] == y.bmax[k];
+        if (same && x.count > 0) {
+            std::vector<std::uint32_t> p(a.prim_ids.begin() + x.offset, a.prim_ids.begin() + x.offset + x.count);
+            std::vector<std::uint32_t> q(b.prim_ids.begin() + x.offset, b.prim_ids.begin() + x.offset + x.count);
+            std::sort(p.begin(), p.end()), std::sort(q.begin(), q.end());
+            same = p == q;
+        }
+        differing += !same;
+    }
+    CHECK(differing == 0);
+}
+
+void check_fast_builds_the_same(const triangle_mesh& m) {
+    const builder_input in(m);
+    for (sah_build_params p : all_params()) {
+        if (p.method != sah_method::binned) continue;
+        for (const int k : {p.bins, 5, 64}) {
+            p.bins = k;
+            INFO(to_string(p) << ", max_leaf " << p.max_leaf << ", " << m.triangle_count() << " triangles");
+            check_same_tree(build_sah_bvh(in.boxes, in.centroids, p), build_sah_bvh_fast(in.boxes, in.centroids, p));
+        }
+    }
+}
+
+}  // namespace
+
+TEST_CASE("ch05 SAH: the fast binned builder builds the same tree, node for node", "[ch05][adversarial]") {
+    check_fast_builds_the_same(teapot_scene(3).mesh);
+    check_fast_builds_the_same(random_soup(2000, 7, 0.1f));
+    triangle_mesh flat = random_soup(600, 5, 0.1f);
+    for (vec3& p : flat.positions) p.z = 0.5f;
+    check_fast_builds_the_same(flat);
+    check_fast_builds_the_same(copies(3000, vec3(0, 0, 0), vec3(1, 0, 0), vec3(0, 1, 0)));
+    check_fast_builds_the_same(copies(1, vec3(0, 0, 0), vec3(1, 0, 0), vec3(0, 1, 0)));
+    check_fast_builds_the_same(triangle_mesh{});
+    // Non-finite vertices: loose primitives in both.
+    triangle_mesh odd = random_soup(300, 9, 0.1f);
+    odd.positions[0].x = std::numeric_limits<float>::quiet_NaN();
+    odd.positions[5].y = std::numeric_limits<float>::infinity();
+    check_fast_builds_the_same(odd);
+    // The sweep is handed on to build_sah_bvh.
+    const builder_input in(teapot_scene(2).mesh);
+    sah_build_params sweep;
+    sweep.method = sah_method::sweep;
+    check_same_tree(build_sah_bvh(in.boxes, in.centroids, sweep), build_sah_bvh_fast(in.boxes, in.centroids, sweep));
+}
+
+TEST_CASE("ch05 SAH: the fast binned builder builds the same tree on the bunny", "[ch05]") {
+    const std::filesystem::path file = test::shared_scene("bunny.ply");
+    if (file.empty()) {
+        WARN("skipped: ../shared/scenes/bunny.ply is not beside this clone");
+        return;
+    }
+    const builder_input in(load_scene(file).mesh);
+    for (const int k : {4, 16, 32}) {
+        sah_build_params p;
+        p.bins = k;
+        INFO(to_string(p));
+        check_same_tree(build_sah_bvh(in.boxes, in.centroids, p), build_sah_bvh_fast(in.boxes, in.centroids, p));
     }
 }

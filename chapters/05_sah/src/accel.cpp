@@ -10,10 +10,16 @@ namespace strahl::ch05 {
 std::unique_ptr<ch04::bvh_accel_base> make_accel(bool virtual_primitives, const sah_build_params& params,
                                                  walk_kind walk) {
     const std::string name = "ch05-" + to_string(params);
+    if (walk == walk_kind::chapter04) {
+        ch04::bvh_builder builder = [params](std::span<const aabb> b, std::span<const vec3> c) {
+            return build_sah_bvh(b, c, params);
+        };
+        return ch04::make_bvh_accel(virtual_primitives, name, std::move(builder));
+    }
+    // The fast row: the same tree from the fast builder, walked by the fast traversal.
     ch04::bvh_builder builder = [params](std::span<const aabb> b, std::span<const vec3> c) {
-        return build_sah_bvh(b, c, params);
+        return build_sah_bvh_fast(b, c, params);
     };
-    if (walk == walk_kind::chapter04) return ch04::make_bvh_accel(virtual_primitives, name, std::move(builder));
     if (virtual_primitives)
         return std::make_unique<ch04::bvh_accel_t<ch01::object_set, fast_walk>>(true, name + "-fast", std::move(builder));
     return std::make_unique<ch04::bvh_accel_t<ch01::triangle_set, fast_walk>>(false, name + "-fast", std::move(builder));

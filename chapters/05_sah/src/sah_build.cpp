@@ -145,11 +145,15 @@ struct builder {
     }
 
     // The fallback where the heuristic has no split, or deep down: the object median on the centroid box's
-    // longest axis (ties by id), or the range halved as it stands when all centroids coincide.
+    // longest axis (ties by id), or, when all centroids coincide, the range halved by id.
     std::size_t median(std::size_t begin, std::size_t end, const aabb& cbox, int& axis) {
         axis = cbox.largest_axis();
         const std::size_t mid = begin + (end - begin) / 2;
-        if (!(cbox.max[axis] > cbox.min[axis])) return mid;
+        const auto first = refs.begin() + std::ptrdiff_t(begin), last = refs.begin() + std::ptrdiff_t(end);
+        if (!(cbox.max[axis] > cbox.min[axis])) {  // halved by id, so the tree does not depend on the order
+            std::nth_element(first, first + std::ptrdiff_t(mid - begin), last, [](const ref& x, const ref& y) { return x.id < y.id; });
+            return mid;
+        }
         const int a = axis;
         std::nth_element(refs.begin() + std::ptrdiff_t(begin), refs.begin() + std::ptrdiff_t(mid),
                          refs.begin() + std::ptrdiff_t(end), [a](const ref& x, const ref& y) {

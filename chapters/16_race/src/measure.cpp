@@ -50,6 +50,10 @@ bool agrees(const hit& a, const hit& b, bool exact) {
     return a.prim == b.prim && bits_equal(a.t, b.t) && bits_equal(a.u, b.u) && bits_equal(a.v, b.v);
 }
 
+double measure_build(accel& a, const scene& s, const timing_rules& rules) {
+    return 1e3 * median(time_runs(rules, [&] { a.build(s); }));
+}
+
 query_result measure_closest(const accel& a, std::span<const ray> rays, const std::vector<hit>& ref,
                              const timing_rules& rules) {
     query_result q;

@@ -1,4 +1,5 @@
-// Measuring one structure on one ray set, the same way for every structure: build time, memory, SAH cost,
+// Measuring one structure on one ray set, the same way for every structure: build time (median of timed
+// builds after a warm-up), memory, SAH cost,
 // Mrays/s of closest-hit and any-hit queries (median of timed runs after a warm-up), tests per ray from a
 // counting run, and how many rays' results differ from the reference (brute force).
 #pragma once
@@ -30,6 +31,11 @@ struct query_result {
     std::size_t differing = 0;  // rays whose result differs from the reference (see agrees())
     std::optional<double> box_per_ray, prim_per_ray, nodes_per_ray;
 };
+
+// Build time in ms: a.build(s) once as a warm-up, then timed as the queries are (up to rules.repeats
+// builds within the budget), the median. Only the first build of a process pays for fresh memory pages
+// (on a virtual machine a page fault costs microseconds); the median is the steady cost of a rebuild.
+double measure_build(accel& a, const scene& s, const timing_rules& rules);
 
 // Times a.intersect (closest) or a.occluded (any) on rays and compares with the reference.
 query_result measure_closest(const accel& a, std::span<const ray> rays, const std::vector<hit>& ref,
