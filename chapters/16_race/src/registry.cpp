@@ -48,7 +48,7 @@ std::vector<accel_entry> registered_accels(const registry_options& o) {
          [] { return ch05::make_accel(false, sah(ch05::sah_method::binned, 16)); }},
         {"ch05-binned16-virtual", "05", "the same over chapter 01's virtual objects",
          [] { return ch05::make_accel(true, sah(ch05::sah_method::binned, 16)); }},
-        {"ch05-binned16-fast", "05", "the same tree, chapter 05's faster scalar traversal (children tested at the parent)",
+        {"ch05-binned16-fast", "05", "the same tree from chapter 05's fast builder, walked by its faster scalar traversal",
          [] { return ch05::make_accel(false, sah(ch05::sah_method::binned, 16), ch05::walk_kind::fast); }},
         {"ch06-median-rotated", "06", "chapter 04's median BVH refined by tree rotations (Kensler 2008)",
          [] { return ch06::make_accel(false, refined(ch06::start_tree::median, ch06::refine_method::rotations)); }},
