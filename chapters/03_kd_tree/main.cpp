@@ -107,11 +107,9 @@ int run(int argc, const char* const* argv) {
     if (threads < 0) throw usage_error("--threads must be 0 (all cores) or more");
     const thread_limit limit(threads);
     options o;
-    o.width = args.has("width") ? args.get_int("width") : (quick ? 320 : 640);
-    o.height = args.has("height") ? args.get_int("height") : o.width * 3 / 4;
+    const image_size size = read_image_size(args, quick ? 320 : 640, 16384);
+    o.width = size.width, o.height = size.height;
     o.levels = args.get_int("levels");
-    if (o.width < 1 || o.width > 16384 || o.height < 1 || o.height > 16384)
-        throw usage_error("--width and --height must lie in [1, 16384]");
     if (o.levels < 0 || o.levels > 12) throw usage_error("--levels must lie in [0, 12]");
     if (args.has("out")) {
         o.folder = args.get("out");

@@ -110,10 +110,8 @@ int run(int argc, const char* const* argv) {
     if (threads < 0) throw usage_error("--threads must be 0 (all cores) or more");
     const thread_limit limit(threads);
     options o;
-    o.width = args.has("width") ? args.get_int("width") : (quick ? 320 : 640);
-    o.height = args.has("height") ? args.get_int("height") : o.width * 3 / 4;
-    if (o.width < 1 || o.width > 16384 || o.height < 1 || o.height > 16384)
-        throw usage_error("--width and --height must lie in [1, 16384]");
+    const image_size size = read_image_size(args, quick ? 320 : 640, 16384);
+    o.width = size.width, o.height = size.height;
     const std::string levels = args.get("levels");
     char dash = 0, extra = 0;
     if (std::sscanf(levels.c_str(), "%d%c%d%c", &o.first_level, &dash, &o.last_level, &extra) != 3 || dash != '-' ||

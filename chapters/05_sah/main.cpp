@@ -152,11 +152,9 @@ int run(int argc, const char* const* argv) {
     const bool quick = args.has("quick");
     const thread_limit one(1);  // the chapter's figures are single-threaded, as in the race's table
     options o;
-    o.width = args.has("width") ? args.get_int("width") : (quick ? 96 : 192);
-    o.height = args.has("height") ? args.get_int("height") : o.width * 3 / 4;
+    const image_size size = read_image_size(args, quick ? 96 : 192, 4096);
+    o.width = size.width, o.height = size.height;
     o.repeats = args.get_int("repeats");
-    if (o.width < 1 || o.width > 4096 || o.height < 1 || o.height > 4096)
-        throw usage_error("--width and --height must lie in [1, 4096]");
     if (o.repeats < 1 || o.repeats > 100) throw usage_error("--repeats must lie in [1, 100]");
     o.bins = parse_int_list(quick && !args.has("bins") ? "4,16,64" : args.get("bins"), "bins", 2, 256);
     float ct = 0, ci = 0;

@@ -149,6 +149,15 @@ void prepare_output(const std::filesystem::path& file, bool user_named, bool for
         throw std::runtime_error("cannot write into folder '" + folder.string() + "' (permission denied)");
 }
 
+image_size read_image_size(const cli& args, int default_width, int max_side) {
+    image_size size;
+    size.width = args.has("width") ? args.get_int("width") : default_width;
+    size.height = args.has("height") ? args.get_int("height") : size.width * 3 / 4;
+    if (size.width < 1 || size.width > max_side || size.height < 1 || size.height > max_side)
+        throw usage_error("--width and --height must lie in [1, " + std::to_string(max_side) + "]");
+    return size;
+}
+
 std::vector<int> parse_int_list(const std::string& text, const std::string& name, int lo, int hi) {
     std::vector<int> out;
     std::stringstream in(text);

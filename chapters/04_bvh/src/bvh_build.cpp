@@ -91,12 +91,8 @@ bvh build_bvh(std::span<const aabb> boxes, std::span<const vec3> centroids, cons
     const timer clock;
     bvh t;
     t.stats.primitives = boxes.size();
-    // Primitives whose box or centroid is not finite cannot be placed: every ray tests them ("loose").
-    for (std::size_t i = 0; i < boxes.size(); ++i) {
-        const bool finite = is_finite(boxes[i].min) && is_finite(boxes[i].max) && is_finite(centroids[i]) &&
-                            !boxes[i].is_empty();
-        (finite ? t.prim_ids : t.loose).push_back(std::uint32_t(i));
-    }
+    for (std::size_t i = 0; i < boxes.size(); ++i)
+        (fits_in_tree(boxes[i], centroids[i]) ? t.prim_ids : t.loose).push_back(std::uint32_t(i));
     if (!t.prim_ids.empty()) {
         bvh_build_params p = params;
         p.leaf_size = std::clamp(p.leaf_size, 1, 255);

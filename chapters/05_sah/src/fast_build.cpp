@@ -322,8 +322,8 @@ ch04::bvh build_sah_bvh_fast(std::span<const aabb> boxes, std::span<const vec3> 
     for (std::size_t i = 0; i < boxes.size(); ++i) {
         const aabb& b = boxes[i];
         const vec3& c = centroids[i];
-        if (!is_finite(b.min) || !is_finite(b.max) || !is_finite(c) || b.is_empty()) {
-            t.loose.push_back(std::uint32_t(i));  // as build_sah_bvh: tested by every ray
+        if (!ch04::fits_in_tree(b, c)) {
+            t.loose.push_back(std::uint32_t(i));  // tested by every ray
             continue;
         }
         refs.push_back(ref{f4{b.min.x, b.min.y, b.min.z, std::bit_cast<float>(std::uint32_t(i))},

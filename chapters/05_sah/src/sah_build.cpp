@@ -238,14 +238,11 @@ ch04::bvh build_sah_bvh(std::span<const aabb> boxes, std::span<const vec3> centr
     const timer clock;
     ch04::bvh t;
     t.stats.primitives = boxes.size();
-    // Primitives whose box or centroid is not finite cannot be placed: every ray tests them ("loose").
     std::vector<ref> refs;
     refs.reserve(boxes.size());
     for (std::size_t i = 0; i < boxes.size(); ++i) {
-        const bool finite = is_finite(boxes[i].min) && is_finite(boxes[i].max) && is_finite(centroids[i]) &&
-                            !boxes[i].is_empty();
-        if (!finite) {
-            t.loose.push_back(std::uint32_t(i));
+        if (!ch04::fits_in_tree(boxes[i], centroids[i])) {
+            t.loose.push_back(std::uint32_t(i));  // tested by every ray
             continue;
         }
         const aabb& b = boxes[i];

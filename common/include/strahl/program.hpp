@@ -54,6 +54,13 @@ int guarded_main(const char* program, int (*body)(int, const char* const*), int 
 // the course's to regenerate. Also fails early, with a clear message, when the folder cannot be written.
 void prepare_output(const std::filesystem::path& file, bool user_named, bool force);
 
+// --width and --height as the chapter programs read them: the width from --width or default_width, the
+// height from --height or 3/4 of the width; both in [1, max_side], else usage_error.
+struct image_size {
+    int width = 0, height = 0;
+};
+image_size read_image_size(const cli& args, int default_width, int max_side);
+
 // A comma-separated list of integers in [lo, hi] for option --name ("4,16,64"); throws usage_error on
 // anything else, or on an empty list.
 std::vector<int> parse_int_list(const std::string& text, const std::string& name, int lo, int hi);

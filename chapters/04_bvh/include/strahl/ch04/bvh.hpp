@@ -55,6 +55,12 @@ struct bvh_stats {
     double build_ms = 0.0;
 };
 
+// Whether a tree can place a primitive: its box and centroid finite, the box not empty. The builders leave
+// the others out of the tree ("loose"): every ray tests them.
+inline bool fits_in_tree(const aabb& box, const vec3& centroid) {
+    return is_finite(box.min) && is_finite(box.max) && is_finite(centroid) && !box.is_empty();
+}
+
 struct bvh {
     aabb bounds;                           // the root's box
     std::vector<bvh_node> nodes;           // nodes[0] is the root (absent for an empty tree)
