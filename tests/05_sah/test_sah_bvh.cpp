@@ -249,3 +249,27 @@ TEST_CASE("ch05 SAH: the fast binned builder builds the same tree on the bunny",
         check_same_tree(build_sah_bvh(in.boxes, in.centroids, p), build_sah_bvh_fast(in.boxes, in.centroids, p));
     }
 }
+
+TEST_CASE("ch05 SAH: Sponza's own view looks at the inside of the building", "[ch05]") {
+    // With the front view, 19% of Sponza's primary rays hit and its speed figures measure misses.
+    const std::filesystem::path file = test::shared_scene("sponza.obj");
+    if (file.empty()) {
+        WARN("skipped: ../shared/scenes/sponza.obj is not beside this clone");
+        return;
+    }
+    const scene s = load_scene(file);
+    const aabb box = s.bounds();
+    CHECK(box.contains(s.camera.eye));
+    REQUIRE(s.lights.size() == 1);
+    CHECK(box.contains(s.lights[0].position));
+    const auto accel = make_accel(false, {}, walk_kind::fast);
+    accel->build(s);
+    const camera cam(s.camera, 64, 48);
+    std::vector<ray> rays;
+    for (int y = 0; y < 48; ++y)
+        for (int x = 0; x < 64; ++x) rays.push_back(cam.pixel_ray(x, y));
+    std::vector<hit> hits(rays.size());
+    accel->intersect(rays, hits);
+    const auto hit_count = std::count_if(hits.begin(), hits.end(), [](const hit& h) { return h.prim != invalid_id; });
+    CHECK(double(hit_count) / double(rays.size()) > 0.9);
+}

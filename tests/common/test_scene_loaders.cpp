@@ -246,6 +246,25 @@ TEST_CASE("scene loader: load_scene frames the mesh, load_scene_spec reads built
     REQUIRE_THROWS_AS(load_scene_spec((dir / "absent.ply").string()), load_error);
 }
 
+TEST_CASE("scene loader: a mesh named sponza.obj gets its inside view, placed in its bounding box", "[common][scene]") {
+    // Two tetrahedra' worth of box: [0, 10] x [0, 5] x [0, 2]. The same file under another name gets the front view.
+    const auto dir = test::scratch_dir("scene_loader_view");
+    const std::string text = "v 0 0 0\nv 10 0 0\nv 0 5 0\nv 0 0 2\nf 1 2 3\nf 1 2 4\n";
+    const scene front = load_scene(write_file(dir, "box.obj", text));
+    const scene inside = load_scene(write_file(dir, "Sponza.OBJ", text));
+    const aabb box = inside.bounds();
+    CHECK(front.camera.eye.z > box.max.z);
+    CHECK(box.contains(inside.camera.eye));
+    CHECK(inside.camera.eye.x == Approx(7.5f));  // three quarters along x, looking towards -x
+    CHECK(inside.camera.target.x < inside.camera.eye.x);
+    CHECK(inside.camera.vfov_degrees == 70.0f);
+    REQUIRE(inside.lights.size() == 1);
+    CHECK(box.contains(inside.lights[0].position));
+    const vec3 to_centre = inside.lights[0].position - box.centroid();
+    CHECK(inside.lights[0].intensity.x / glm::dot(to_centre, to_centre) == Approx(pi).epsilon(1e-4));
+    CHECK(inside.mesh.triangle_count() == front.mesh.triangle_count());
+}
+
 TEST_CASE("scene loader: frame_camera sees every corner of flat, long and empty boxes", "[common][scene]") {
     const aabb boxes[] = {aabb{vec3(-1), vec3(1)}, aabb{vec3(0, 0, 0), vec3(100, 0.01f, 0.01f)},
                           aabb{vec3(-5, -5, 0), vec3(5, 5, 0)}, aabb{vec3(3, 4, 5), vec3(3, 4, 5)}};

@@ -98,7 +98,10 @@ public:
 triangle_mesh load_mesh(const std::filesystem::path& file, std::ostream* log = nullptr);
 
 // load_mesh plus what a render needs: one diffuse material, a camera framing the mesh from the front
-// (+z looking at -z) and a point light near the camera.
+// (+z looking at -z) and a point light near the camera. Meshes whose front view says little have a view
+// of their own, chosen by file name (case ignored) and placed in fractions of the mesh's bounding box:
+// sponza.obj is seen from inside, down its atrium from the +x end, lit from the middle of the atrium
+// (from outside only 19% of primary rays would hit it).
 scene load_scene(const std::filesystem::path& file, std::ostream* log = nullptr);
 
 // "builtin:NAME" (see builtin_scene_names) or a file path.
