@@ -121,15 +121,7 @@ int run(int argc, const char* const* argv) {
     if (which != "all" && which != "teapot" && which != "stadium" && which != "bunny" && which != "sponza")
         throw usage_error("--scene must be teapot, stadium, bunny, sponza or all, not '" + which + "'");
     const auto shared = [&](const char* file, const char* name) {
-        const fs::path p = fs::path(STRAHL_SHARED_SCENES) / file;
-        std::error_code ec;
-        if (!fs::exists(p, ec)) {
-            std::printf("%s: skipped, %s is not there (the course's shared meshes)\n", name, p.string().c_str());
-            return;
-        }
-        scene s = load_scene(p);
-        s.name = name;
-        run_scene(s, o);
+        if (const auto s = load_shared_mesh(file, name)) run_scene(*s, o);
     };
     if (which == "all" || which == "teapot") run_scene(builtin_scene("teapot"), o);
     if (which == "all" || which == "stadium") run_scene(builtin_scene("teapot_stadium"), o);

@@ -128,17 +128,8 @@ int run(int argc, const char* const* argv) {
         throw usage_error("--scene must be teapot, stadium, bunny or all, not '" + which + "'");
     if (which == "all" || which == "teapot") run_scene(builtin_scene("teapot"), o);
     if (which == "all" || which == "stadium") run_scene(builtin_scene("teapot_stadium"), o);
-    if ((which == "all" && !quick) || which == "bunny") {
-        const fs::path p = fs::path(STRAHL_SHARED_SCENES) / "bunny.ply";
-        std::error_code ec;
-        if (!fs::exists(p, ec)) {
-            std::printf("bunny: skipped, %s is not there (the course's shared meshes)\n", p.string().c_str());
-        } else {
-            scene s = load_scene(p);
-            s.name = "bunny";
-            run_scene(s, o);
-        }
-    }
+    if ((which == "all" && !quick) || which == "bunny")
+        if (const auto s = load_shared_mesh("bunny.ply", "bunny")) run_scene(*s, o);
     std::printf("against the grid, the k-d tree and Embree, on the same rays:\n"
                 "  build/release/bin/race --quick --accels brute,ch02-grid,ch03-kd,ch04-median,ch04-spatial,"
                 "embree-medium\n");

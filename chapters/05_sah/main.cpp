@@ -48,12 +48,7 @@ std::vector<variant> run_scene(const scene& s, const options& o) {
     // median BVH as the exact reference the other trees must agree with.
     const auto reference = ch04::make_bvh_accel(false);
     reference->build(s);
-    const std::vector<ray> primary = ch01::primary_rays(s, o.width, o.height);
-    std::vector<hit> ref_primary(primary.size());
-    reference->intersect(primary, ref_primary);
-    const std::vector<ray> diffuse = ch01::secondary_rays(ch01::ray_kind::diffuse, s, primary, ref_primary, 1);
-    std::vector<hit> ref_diffuse(diffuse.size());
-    reference->intersect(diffuse, ref_diffuse);
+    const ch01::checked_rays rays = ch01::make_checked_rays(s, o.width, o.height, *reference);
 
     std::vector<variant> rows;
     const auto measure = [&](variant v, const std::function<std::unique_ptr<ch04::bvh_accel_base>()>& make) {
@@ -63,13 +58,13 @@ std::vector<variant> run_scene(const scene& s, const options& o) {
         v.sah = ch04::sah_tree_cost(t, o.costs.traversal, o.costs.intersection);
         v.nodes = t.nodes.size();
         v.depth = t.stats.depth;
-        std::vector<hit> hits(primary.size()), dhits(diffuse.size());
-        const double p_ms = median_ms(o.repeats, [&] { a->intersect(primary, hits); });
-        const double d_ms = median_ms(o.repeats, [&] { a->intersect(diffuse, dhits); });
-        v.differing = hits_differing(hits, ref_primary) + hits_differing(dhits, ref_diffuse);
-        v.primary_mrays = double(primary.size()) / p_ms * 1e-3;
-        v.diffuse_mrays = double(diffuse.size()) / d_ms * 1e-3;
-        const auto counts = a->intersect_counted(diffuse, dhits);
+        std::vector<hit> hits(rays.primary.size()), dhits(rays.diffuse.size());
+        const double p_ms = median_ms(o.repeats, [&] { a->intersect(rays.primary, hits); });
+        const double d_ms = median_ms(o.repeats, [&] { a->intersect(rays.diffuse, dhits); });
+        v.differing = hits_differing(hits, rays.primary_hits) + hits_differing(dhits, rays.diffuse_hits);
+        v.primary_mrays = double(rays.primary.size()) / p_ms * 1e-3;
+        v.diffuse_mrays = double(rays.diffuse.size()) / d_ms * 1e-3;
+        const auto counts = a->intersect_counted(rays.diffuse, dhits);
         v.boxes_per_ray = counts ? counts->per_ray(counts->box_tests) : 0.0;
         v.tris_per_ray = counts ? counts->per_ray(counts->prim_tests) : 0.0;
         std::printf("  %-10s %10.2f %8.2f %8zu %5d %9.2f %9.2f %9.1f %9.1f %6zu\n", v.label.c_str(), v.build_ms, v.sah,
@@ -172,17 +167,9 @@ int run(int argc, const char* const* argv) {
     std::vector<std::pair<std::string, std::vector<variant>>> all;
     if (which == "teapot") all.emplace_back("teapot", run_scene(builtin_scene("teapot"), o));
     if (which == "all" || which == "stadium") all.emplace_back("stadium", run_scene(builtin_scene("teapot_stadium"), o));
-    for (const char* mesh : {"bunny", "sponza"}) {
-        if (which != "all" && which != mesh) continue;
-        const fs::path p = fs::path(STRAHL_SHARED_SCENES) / (std::string(mesh) + (mesh[0] == 'b' ? ".ply" : ".obj"));
-        std::error_code ec;
-        if (!fs::exists(p, ec)) {
-            std::printf("%s: skipped, %s is not there (the course's shared meshes)\n", mesh, p.string().c_str());
-            continue;
-        }
-        scene s = load_scene(p);
-        s.name = mesh;
-        all.emplace_back(mesh, run_scene(s, o));
+    for (const auto& [name, file] : {std::pair{"bunny", "bunny.ply"}, std::pair{"sponza", "sponza.obj"}}) {
+        if (which != "all" && which != name) continue;
+        if (const auto s = load_shared_mesh(file, name)) all.emplace_back(name, run_scene(*s, o));
     }
     write_outputs(all, o);
     std::printf("against Embree on the same rays: build/release/bin/race --accels ch04-median,ch05-sweep,"

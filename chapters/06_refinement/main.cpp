@@ -50,12 +50,7 @@ std::vector<row> run_scene(const scene& s, const options& o) {
     // median BVH as the exact reference every refined tree must agree with.
     const auto reference = ch04::make_bvh_accel(false);
     reference->build(s);
-    const std::vector<ray> primary = ch01::primary_rays(s, o.width, o.height);
-    std::vector<hit> ref_primary(primary.size());
-    reference->intersect(primary, ref_primary);
-    const std::vector<ray> diffuse = ch01::secondary_rays(ch01::ray_kind::diffuse, s, primary, ref_primary, 1);
-    std::vector<hit> ref_diffuse(diffuse.size());
-    reference->intersect(diffuse, ref_diffuse);
+    const ch01::checked_rays rays = ch01::make_checked_rays(s, o.width, o.height, *reference);
     // What the builders see: one box and one centroid per triangle.
     const ch01::triangle_set tris(s.mesh);
     std::vector<aabb> boxes(tris.size());
@@ -66,12 +61,12 @@ std::vector<row> run_scene(const scene& s, const options& o) {
     const auto trace = [&](row& r, const ch04::bvh& tree) {
         const auto a = ch04::make_bvh_accel(false, "given", [&tree](auto, auto) { return tree; });
         a->build(s);
-        std::vector<hit> hits(primary.size()), dhits(diffuse.size());
-        const double p_ms = median_ms(o.repeats, [&] { a->intersect(primary, hits); });
-        const double d_ms = median_ms(o.repeats, [&] { a->intersect(diffuse, dhits); });
-        r.differing = hits_differing(hits, ref_primary) + hits_differing(dhits, ref_diffuse);
-        r.primary_mrays = double(primary.size()) / p_ms * 1e-3;
-        r.diffuse_mrays = double(diffuse.size()) / d_ms * 1e-3;
+        std::vector<hit> hits(rays.primary.size()), dhits(rays.diffuse.size());
+        const double p_ms = median_ms(o.repeats, [&] { a->intersect(rays.primary, hits); });
+        const double d_ms = median_ms(o.repeats, [&] { a->intersect(rays.diffuse, dhits); });
+        r.differing = hits_differing(hits, rays.primary_hits) + hits_differing(dhits, rays.diffuse_hits);
+        r.primary_mrays = double(rays.primary.size()) / p_ms * 1e-3;
+        r.diffuse_mrays = double(rays.diffuse.size()) / d_ms * 1e-3;
     };
     const auto print = [](const row& r) {
         std::printf("  %-9s %-11s %6d %6d %8zu %9.2f %8.2f %8.2f %5d", r.start.c_str(), r.method.c_str(), r.budget,
@@ -202,17 +197,8 @@ int run(int argc, const char* const* argv) {
         s.name = "stadium";
         add("stadium", s);
     }
-    if (which == "all" || which == "bunny") {
-        const fs::path p = fs::path(STRAHL_SHARED_SCENES) / "bunny.ply";
-        std::error_code ec;
-        if (!fs::exists(p, ec)) {
-            std::printf("bunny: skipped, %s is not there (the course's shared meshes)\n", p.string().c_str());
-        } else {
-            scene s = load_scene(p);
-            s.name = "bunny";
-            add("bunny", s);
-        }
-    }
+    if (which == "all" || which == "bunny")
+        if (const auto s = load_shared_mesh("bunny.ply", "bunny")) add("bunny", *s);
     write_outputs(rows, scenes, o);
     std::printf("an LBVH start tree comes with chapter 07; against Embree on the same rays: build/release/bin/race "
                 "--accels ch05-binned16,ch06-binned16-rotated,ch06-binned16-reinserted,embree-medium\n");

@@ -1,4 +1,5 @@
 #include "strahl/program.hpp"
+#include "strahl/scene.hpp"
 #include "strahl/todo.hpp"
 #include <cmath>
 #include <cstdio>
@@ -171,6 +172,18 @@ std::vector<int> parse_int_list(const std::string& text, const std::string& name
     }
     if (out.empty()) throw usage_error("--" + name + " wants at least one number");
     return out;
+}
+
+std::optional<scene> load_shared_mesh(const std::string& file, const std::string& name) {
+    const std::filesystem::path p = std::filesystem::path(STRAHL_SHARED_SCENES) / file;
+    std::error_code ec;
+    if (!std::filesystem::exists(p, ec)) {
+        std::printf("%s: skipped, %s is not there (the course's shared meshes)\n", name.c_str(), p.string().c_str());
+        return std::nullopt;
+    }
+    scene s = load_scene(p);
+    s.name = name;
+    return s;
 }
 
 }  // namespace strahl

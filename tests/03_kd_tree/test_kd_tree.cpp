@@ -3,11 +3,9 @@
 #include "strahl/ch01/primitive_sets.hpp"
 #include "strahl/ch03/accel.hpp"
 #include "strahl/procedural.hpp"
-#include "strahl/rng.hpp"
 #include "exactness.hpp"
+#include "nasty_rays.hpp"
 #include <catch2/catch.hpp>
-#include <cstring>
-#include <limits>
 
 using namespace strahl;
 using namespace strahl::ch03;
@@ -17,38 +15,17 @@ using test::mesh_only;
 
 namespace {
 
-// Rays made to break a k-d tree: from inside the box, along each axis with +0 and -0 in the other
-// components, lying in and starting on the tree's split planes, and NaN.
+// Rays made to break a k-d tree: nasty_rays.hpp's random, axis-aligned and degenerate rays, and rays lying
+// in, starting on and crossing the split planes of the tree's first six levels.
 std::vector<ray> nasty_rays(const kd_tree& t, std::size_t n, std::uint64_t seed) {
-    pcg32 g(seed);
-    const aabb b = t.bounds.is_empty() ? aabb{vec3(-1), vec3(1)} : t.bounds;
-    const vec3 lo = b.min - 0.1f * (b.extent() + 0.1f), hi = b.max + 0.1f * (b.extent() + 0.1f);
-    const auto point = [&] { return lo + vec3(g.next_float(), g.next_float(), g.next_float()) * (hi - lo); };
-    const auto dir = [&] { return vec3(g.next_float(), g.next_float(), g.next_float()) * 2.0f - 1.0f; };
+    test::nasty_ray_maker m(t.bounds, seed);
     std::vector<ray> rays;
-    for (std::size_t i = 0; i < n; ++i) rays.push_back({point(), dir()});
-    for (int a = 0; a < 3; ++a)
-        for (const float s : {1.0f, -1.0f})
-            for (const float z : {0.0f, -0.0f})
-                for (std::size_t i = 0; i < n / 8; ++i) {
-                    vec3 d(z);
-                    d[a] = s;
-                    rays.push_back({point(), d});
-                }
+    m.add_random_and_axis(rays, n);
     for (const kd_plane& p : split_planes(t, 6)) {
-        const vec3 c = 0.5f * (p.corners[0] + p.corners[2]);
-        vec3 in_plane = dir();
-        in_plane[p.axis] = 0.0f;
-        vec3 o = point();
-        o[p.axis] = c[p.axis];
-        rays.push_back({o, in_plane});             // in the plane
-        rays.push_back({o, dir()});                // starting on it
-        rays.push_back({c, dir(), -1.0f, inf});   // through the middle of the rectangle, both ways
+        const vec3 c = 0.5f * (p.corners[0] + p.corners[2]);  // the middle of the plane's rectangle
+        m.add_plane(rays, p.axis, c[p.axis], c);
     }
-    const float nan = std::numeric_limits<float>::quiet_NaN();
-    rays.push_back({vec3(nan), vec3(0, 0, 1)});
-    rays.push_back({point(), vec3(nan, 0, 1)});
-    rays.push_back({point(), vec3(0.0f)});
+    m.add_degenerate(rays);
     return rays;
 }
 

@@ -98,4 +98,15 @@ std::vector<ray> make_rays(ray_kind kind, const scene& s, int width, int height,
     return secondary_rays(kind, s, primary, hits, seed);
 }
 
+checked_rays make_checked_rays(const scene& s, int width, int height, const accel& exact) {
+    checked_rays c;
+    c.primary = primary_rays(s, width, height);
+    c.primary_hits.resize(c.primary.size());
+    exact.intersect(c.primary, c.primary_hits);
+    c.diffuse = secondary_rays(ray_kind::diffuse, s, c.primary, c.primary_hits, 1);
+    c.diffuse_hits.resize(c.diffuse.size());
+    exact.intersect(c.diffuse, c.diffuse_hits);
+    return c;
+}
+
 }  // namespace strahl::ch01

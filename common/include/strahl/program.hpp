@@ -3,11 +3,14 @@
 #pragma once
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace strahl {
+
+struct scene;
 
 // A wrong command line: unknown option, missing or malformed value. Programs print it with the usage.
 class usage_error : public std::runtime_error {
@@ -64,5 +67,10 @@ image_size read_image_size(const cli& args, int default_width, int max_side);
 // A comma-separated list of integers in [lo, hi] for option --name ("4,16,64"); throws usage_error on
 // anything else, or on an empty list.
 std::vector<int> parse_int_list(const std::string& text, const std::string& name, int lo, int hi);
+
+// One of the course's shared meshes (file, in ../shared/scenes beside the clone), loaded and named `name`
+// for the chapter programs; where it is absent (a clone of its own), prints "NAME: skipped, ..." and
+// returns nothing. A mesh that is there but cannot be read throws, as load_scene does.
+std::optional<scene> load_shared_mesh(const std::string& file, const std::string& name);
 
 }  // namespace strahl

@@ -35,4 +35,13 @@ void trace_any(const accel& a, std::span<const ray> rays, std::span<std::uint8_t
 std::vector<ray> make_rays(ray_kind kind, const scene& s, int width, int height, std::uint64_t seed,
                            const accel& exact, int threads = 1);
 
+// The two ray sets a chapter program times every structure on, with the hits of `exact` as the reference
+// each structure's hits must equal: primary rays for a width x height image and the diffuse rays (seed 1)
+// from their hits.
+struct checked_rays {
+    std::vector<ray> primary, diffuse;
+    std::vector<hit> primary_hits, diffuse_hits;
+};
+checked_rays make_checked_rays(const scene& s, int width, int height, const accel& exact);
+
 }  // namespace strahl::ch01
