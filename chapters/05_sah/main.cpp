@@ -4,8 +4,10 @@
 // time against SAH cost against Mrays/s. Every tree's hits are checked against the median tree's.
 #include "strahl/ch01/ray_sets.hpp"
 #include "strahl/ch05/accel.hpp"
+#include "strahl/image.hpp"
 #include "strahl/parallel.hpp"
 #include "strahl/plot.hpp"
+#include "strahl/primary_trace.hpp"
 #include "strahl/procedural.hpp"
 #include "strahl/program.hpp"
 #include "strahl/timer.hpp"
@@ -40,7 +42,30 @@ struct variant {
     int depth = 0;
 };
 
-std::vector<variant> run_scene(const scene& s, const options& o) {
+// Where the box tests go: box tests per primary ray, pixel by pixel, through the median tree (left half) and
+// the binned SAH tree with 16 bins (right half), both walked by chapter 04's traversal and drawn on one
+// colour scale, so the halves differ only by the tree.
+void write_box_test_map(const scene& s, const std::string& name, const options& o, const fs::path& path) {
+    const camera cam(s.camera, o.width, o.height);
+    std::vector<float> both(std::size_t(2 * o.width) * std::size_t(o.height));
+    sah_build_params p;
+    p.costs = o.costs;
+    p.bins = 16;
+    const std::unique_ptr<ch04::bvh_accel_base> trees[] = {ch04::make_bvh_accel(false), make_accel(false, p)};
+    for (int half = 0; half < 2; ++half) {
+        trees[half]->build(s);
+        const primary_trace r = trace_primary(*trees[half], cam, name + " " + trees[half]->name());
+        for (int y = 0; y < o.height; ++y)
+            for (int x = 0; x < o.width; ++x)
+                both[std::size_t(y) * 2 * o.width + half * o.width + x] = r.box_tests[std::size_t(y) * o.width + x];
+    }
+    write_image(path, heat_map(both, 2 * o.width, o.height, "box tests per ray: median | SAH"));
+    std::printf("  wrote %s\n", path.string().c_str());
+}
+
+std::vector<variant> run_scene(const scene& s, const std::string& name, const options& o) {
+    const fs::path map_path = o.folder / (name + "_box_tests.png");
+    prepare_output(map_path, o.user_named, o.force);
     std::printf("%s: %zu triangles; %d x %d primary rays and as many diffuse; build and trace on one thread, "
                 "median of %d\n",
                 s.name.c_str(), s.mesh.triangle_count(), o.width, o.height, o.repeats);
@@ -92,6 +117,7 @@ std::vector<variant> run_scene(const scene& s, const options& o) {
     // walked by the fast traversal.
     p.bins = 16;
     measure({"fast16"}, [p] { return make_accel(false, p, walk_kind::fast); });
+    write_box_test_map(s, name, o, map_path);
     return rows;
 }
 
@@ -133,14 +159,14 @@ void write_outputs(const std::vector<std::pair<std::string, std::vector<variant>
 int run(int argc, const char* const* argv) {
     cli args("ch05", "Chapter 05, the surface area heuristic (" STRAHL_TRACK "): median, full-sweep and binned "
              "SAH BVHs on the same rays; build time, SAH cost and Mrays/s per number of bins, as a table, a CSV "
-             "file and two plots.");
+             "file and two plots; box tests per pixel as a heat map, median against SAH.");
     args.option("scene", "NAME", "all", "stadium, bunny, sponza, teapot or all (all: stadium, bunny, sponza)")
         .option("bins", "LIST", "4,8,16,32,64,128,256", "comma-separated bin counts, each in [2, 256]")
         .option("costs", "CT,CI", "1,1", "the SAH's traversal and intersection costs")
         .option("width", "N", "", "primary rays per row (default 192, 96 with --quick)")
         .option("height", "N", "", "rows (default 3/4 of the width)")
         .option("repeats", "K", "3", "timed runs per measurement after a warm-up; the median is reported")
-        .option("out", "DIR", "", "write the CSV file and the plots into DIR/ (default out/05_sah/)")
+        .option("out", "DIR", "", "write the CSV file, the plots and the heat maps into DIR/ (default out/05_sah/)")
         .flag("force", "replace existing files in a folder named with --out")
         .flag("quick", "the teapot in a stadium only, 96 x 72 rays, bins 4, 16, 64");
     if (!args.parse(argc, argv)) return 0;
@@ -165,11 +191,11 @@ int run(int argc, const char* const* argv) {
     if (which != "all" && which != "teapot" && which != "stadium" && which != "bunny" && which != "sponza")
         throw usage_error("--scene must be stadium, bunny, sponza, teapot or all, not '" + which + "'");
     std::vector<std::pair<std::string, std::vector<variant>>> all;
-    if (which == "teapot") all.emplace_back("teapot", run_scene(builtin_scene("teapot"), o));
-    if (which == "all" || which == "stadium") all.emplace_back("stadium", run_scene(builtin_scene("teapot_stadium"), o));
+    if (which == "teapot") all.emplace_back("teapot", run_scene(builtin_scene("teapot"), "teapot", o));
+    if (which == "all" || which == "stadium") all.emplace_back("stadium", run_scene(builtin_scene("teapot_stadium"), "stadium", o));
     for (const auto& [name, file] : {std::pair{"bunny", "bunny.ply"}, std::pair{"sponza", "sponza.obj"}}) {
         if (which != "all" && which != name) continue;
-        if (const auto s = load_shared_mesh(file, name)) all.emplace_back(name, run_scene(*s, o));
+        if (const auto s = load_shared_mesh(file, name)) all.emplace_back(name, run_scene(*s, name, o));
     }
     write_outputs(all, o);
     std::printf("against Embree on the same rays: build/release/bin/race --accels ch04-median,ch05-sweep,"
