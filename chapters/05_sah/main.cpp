@@ -59,7 +59,8 @@ void write_box_test_map(const scene& s, const std::string& name, const options& 
             for (int x = 0; x < o.width; ++x)
                 both[std::size_t(y) * 2 * o.width + half * o.width + x] = r.box_tests[std::size_t(y) * o.width + x];
     }
-    write_image(path, heat_map(both, 2 * o.width, o.height, "box tests per ray: median | SAH"));
+    const char* label = o.width >= 128 ? "box tests per ray: median | SAH" : "median | SAH";  // fits the width
+    write_image(path, heat_map(both, 2 * o.width, o.height, label));
     std::printf("  wrote %s\n", path.string().c_str());
 }
 
@@ -83,12 +84,11 @@ std::vector<variant> run_scene(const scene& s, const std::string& name, const op
         v.sah = ch04::sah_tree_cost(t, o.costs.traversal, o.costs.intersection);
         v.nodes = t.nodes.size();
         v.depth = t.stats.depth;
-        std::vector<hit> hits(rays.primary.size()), dhits(rays.diffuse.size());
-        const double p_ms = median_ms(o.repeats, [&] { a->intersect(rays.primary, hits); });
-        const double d_ms = median_ms(o.repeats, [&] { a->intersect(rays.diffuse, dhits); });
-        v.differing = hits_differing(hits, rays.primary_hits) + hits_differing(dhits, rays.diffuse_hits);
-        v.primary_mrays = double(rays.primary.size()) / p_ms * 1e-3;
-        v.diffuse_mrays = double(rays.diffuse.size()) / d_ms * 1e-3;
+        const ch01::checked_speed speed = ch01::time_checked(*a, rays, o.repeats);
+        v.differing = speed.differing;
+        v.primary_mrays = speed.primary_mrays;
+        v.diffuse_mrays = speed.diffuse_mrays;
+        std::vector<hit> dhits(rays.diffuse.size());
         const auto counts = a->intersect_counted(rays.diffuse, dhits);
         v.boxes_per_ray = counts ? counts->per_ray(counts->box_tests) : 0.0;
         v.tris_per_ray = counts ? counts->per_ray(counts->prim_tests) : 0.0;

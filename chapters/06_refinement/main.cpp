@@ -61,12 +61,10 @@ std::vector<row> run_scene(const scene& s, const options& o) {
     const auto trace = [&](row& r, const ch04::bvh& tree) {
         const auto a = ch04::make_bvh_accel(false, "given", [&tree](auto, auto) { return tree; });
         a->build(s);
-        std::vector<hit> hits(rays.primary.size()), dhits(rays.diffuse.size());
-        const double p_ms = median_ms(o.repeats, [&] { a->intersect(rays.primary, hits); });
-        const double d_ms = median_ms(o.repeats, [&] { a->intersect(rays.diffuse, dhits); });
-        r.differing = hits_differing(hits, rays.primary_hits) + hits_differing(dhits, rays.diffuse_hits);
-        r.primary_mrays = double(rays.primary.size()) / p_ms * 1e-3;
-        r.diffuse_mrays = double(rays.diffuse.size()) / d_ms * 1e-3;
+        const ch01::checked_speed speed = ch01::time_checked(*a, rays, o.repeats);
+        r.differing = speed.differing;
+        r.primary_mrays = speed.primary_mrays;
+        r.diffuse_mrays = speed.diffuse_mrays;
     };
     const auto print = [](const row& r) {
         std::printf("  %-9s %-11s %6d %6d %8zu %9.2f %8.2f %8.2f %5d", r.start.c_str(), r.method.c_str(), r.budget,

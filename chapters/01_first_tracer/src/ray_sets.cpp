@@ -3,6 +3,7 @@
 #include "strahl/parallel.hpp"
 #include "strahl/rng.hpp"
 #include "strahl/sampling.hpp"
+#include "strahl/timer.hpp"
 #include <stdexcept>
 
 namespace strahl::ch01 {
@@ -106,6 +107,17 @@ checked_rays make_checked_rays(const scene& s, int width, int height, const acce
     c.diffuse = secondary_rays(ray_kind::diffuse, s, c.primary, c.primary_hits, 1);
     c.diffuse_hits.resize(c.diffuse.size());
     exact.intersect(c.diffuse, c.diffuse_hits);
+    return c;
+}
+
+checked_speed time_checked(const accel& a, const checked_rays& rays, int repeats) {
+    std::vector<hit> hits(rays.primary.size()), dhits(rays.diffuse.size());
+    const double p_ms = median_ms(repeats, [&] { a.intersect(rays.primary, hits); });
+    const double d_ms = median_ms(repeats, [&] { a.intersect(rays.diffuse, dhits); });
+    checked_speed c;
+    c.differing = hits_differing(hits, rays.primary_hits) + hits_differing(dhits, rays.diffuse_hits);
+    c.primary_mrays = double(rays.primary.size()) / p_ms * 1e-3;
+    c.diffuse_mrays = double(rays.diffuse.size()) / d_ms * 1e-3;
     return c;
 }
 

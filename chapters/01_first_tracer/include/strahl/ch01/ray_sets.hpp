@@ -44,4 +44,12 @@ struct checked_rays {
 };
 checked_rays make_checked_rays(const scene& s, int width, int height, const accel& exact);
 
+// Both sets through `a` on this thread: Mrays/s from the median of `repeats` timed runs after a warm-up,
+// and how many of a's hits differ from the reference's (0 for an exact structure).
+struct checked_speed {
+    double primary_mrays = 0, diffuse_mrays = 0;
+    std::size_t differing = 0;
+};
+checked_speed time_checked(const accel& a, const checked_rays& rays, int repeats);
+
 }  // namespace strahl::ch01
