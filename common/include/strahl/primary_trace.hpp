@@ -1,6 +1,6 @@
-// Primary rays of a camera through any structure, as the chapters' programs measure them: one timed run
-// without counters on all threads (with a progress bar), then a counting run that keeps each pixel's
-// counts (for heat maps) and their sum (for tests per ray).
+// Primary rays of a camera through any structure, as the chapters' programs measure them: an untimed
+// warm-up over every 8th row, one timed run without counters on all threads (with a progress bar), then a
+// counting run that keeps each pixel's counts (for heat maps) and their sum (for tests per ray).
 #pragma once
 #include "strahl/accel.hpp"
 #include "strahl/camera.hpp"
