@@ -11,6 +11,7 @@
 #include "strahl/procedural.hpp"
 #include "strahl/program.hpp"
 #include "strahl/timer.hpp"
+#include <algorithm>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
@@ -121,39 +122,111 @@ std::vector<variant> run_scene(const scene& s, const std::string& name, const op
     return rows;
 }
 
-void write_outputs(const std::vector<std::pair<std::string, std::vector<variant>>>& all, const options& o) {
-    const fs::path csv = o.folder / "bins.csv", trade = o.folder / "build_vs_trace.svg",
-                   cost = o.folder / "bins_vs_sah.svg";
-    for (const fs::path& p : {csv, trade, cost}) prepare_output(p, o.user_named, o.force);
+using scene_rows = std::vector<std::pair<std::string, std::vector<variant>>>;
+const char* const csv_header = "scene,tree,bins,build_ms,sah_cost,nodes,depth,primary_mrays_s,diffuse_mrays_s,"
+                               "boxes_per_ray,tris_per_ray,differing";
+
+void write_table(const scene_rows& all, const fs::path& csv) {
     std::ostringstream text;
-    text << "scene,tree,bins,build_ms,sah_cost,nodes,depth,primary_mrays_s,diffuse_mrays_s,boxes_per_ray,"
-            "tris_per_ray,differing\n";
-    plot tp{"Build time against trace speed (diffuse rays, one thread)", "build time [ms]",
-            "diffuse rays [Mrays/s]", true, false, {}};
-    plot cp{"SAH cost against the number of bins (dashed: the full sweep)", "bins per axis", "SAH cost (C_T = C_I = 1)",
-            true, false, {}};
-    for (const auto& [name, rows] : all) {
-        plot_series t{name, {}, {}, true, {}}, c{name, {}, {}, true, {}}, sweep{name + ": sweep", {}, {}, true, {}};
-        for (const variant& v : rows) {
+    text << csv_header << '\n';
+    for (const auto& [name, rows] : all)
+        for (const variant& v : rows)
             text << name << ',' << v.label << ',' << v.bins << ',' << v.build_ms << ',' << v.sah << ',' << v.nodes
                  << ',' << v.depth << ',' << v.primary_mrays << ',' << v.diffuse_mrays << ',' << v.boxes_per_ray
                  << ',' << v.tris_per_ray << ',' << v.differing << '\n';
-            t.x.push_back(v.build_ms);
-            t.y.push_back(v.diffuse_mrays);
-            t.point_labels.push_back(v.bins ? std::to_string(v.bins) : v.label);
-            if (v.bins) c.x.push_back(v.bins), c.y.push_back(v.sah);
-        }
-        for (const variant& v : rows)
-            if (v.label == "sweep" && !c.x.empty()) sweep.x = {c.x.front(), c.x.back()}, sweep.y = {v.sah, v.sah};
-        tp.series.push_back(t);
-        cp.series.push_back(c);
-        if (!sweep.x.empty()) cp.series.push_back(sweep);
-    }
     std::ofstream f(csv);
-    if (!(f << text.str())) throw std::runtime_error("cannot write " + csv.string());
+    f << text.str();
+    f.close();
+    if (!f) throw std::runtime_error("cannot write " + csv.string());
+}
+
+// --replot: the rows of a bins.csv this program wrote, scene by scene in the file's order.
+scene_rows read_table(const fs::path& csv) {
+    std::ifstream f(csv);
+    if (!f) throw std::runtime_error("cannot read '" + csv.string() + "'");
+    std::string line;
+    if (!std::getline(f, line) || line != csv_header)
+        throw std::runtime_error("'" + csv.string() + "' is not a bins.csv written by ch05 (its first line should be '" +
+                                 csv_header + "')");
+    scene_rows all;
+    for (int number = 2; std::getline(f, line); ++number) {
+        if (line.empty()) continue;
+        std::vector<std::string> cells;
+        std::istringstream in(line);
+        for (std::string cell; std::getline(in, cell, ',');) cells.push_back(cell);
+        const std::string where = csv.string() + ", line " + std::to_string(number);
+        if (cells.size() != 12) throw std::runtime_error(where + ": 12 fields expected, not " + std::to_string(cells.size()));
+        const auto num = [&](int k) {
+            std::size_t used = 0;
+            double v = 0.0;
+            try {
+                v = std::stod(cells[k], &used);
+            } catch (const std::exception&) {
+                used = 0;
+            }
+            if (used == 0 || used != cells[k].size() || !std::isfinite(v) || v < 0.0)
+                throw std::runtime_error(where + ": '" + cells[k] + "' is not a number >= 0");
+            return v;
+        };
+        variant v{cells[1], int(num(2))};
+        v.build_ms = num(3), v.sah = num(4), v.nodes = std::size_t(num(5)), v.depth = int(num(6));
+        v.primary_mrays = num(7), v.diffuse_mrays = num(8), v.boxes_per_ray = num(9), v.tris_per_ray = num(10);
+        v.differing = std::size_t(num(11));
+        if (all.empty() || all.back().first != cells[0]) all.emplace_back(cells[0], std::vector<variant>{});
+        all.back().second.push_back(v);
+    }
+    if (all.empty()) throw std::runtime_error("'" + csv.string() + "' holds no rows");
+    return all;
+}
+
+void write_plots(const scene_rows& all, const fs::path& trade, const fs::path& cost) {
+    // The trade per scene, one line in order of quality: the median tree, the binned trees by bin count, the
+    // full sweep; the fast builder's 16-bin tree as a point of the same colour beside it.
+    plot tp{"Build time against trace speed (diffuse rays, one thread)", "build time [ms]",
+            "diffuse rays [Mrays/s]", true, false, {}};
+    // SAH cost relative to the full sweep's, so that every scene reads on one scale.
+    plot cp{"SAH cost of the binned trees relative to the full sweep's (dashed)", "bins per axis",
+            "SAH cost / full sweep's SAH cost", true, false, {}};
+    cp.y_from_zero = false;
+    for (const auto& [name, rows] : all) {
+        const int colour = int(tp.series.size());
+        plot_series line{name, {}, {}, true, {}, colour}, fast{name + " (fast)", {}, {}, false, {}, colour};
+        fast.in_legend = false;
+        plot_series relative{name, {}, {}, true, {}, colour};
+        const auto add = [](plot_series& ser, const variant& v) {
+            ser.x.push_back(v.build_ms);
+            ser.y.push_back(v.diffuse_mrays);
+            ser.point_labels.push_back(v.bins ? std::to_string(v.bins) : v.label);
+        };
+        const variant* sweep = nullptr;
+        for (const variant& v : rows)
+            if (v.label == "sweep") sweep = &v;
+        for (const variant& v : rows)
+            if (v.label == "median") add(line, v);
+        for (const variant& v : rows)
+            if (v.bins) add(line, v);
+        if (sweep) add(line, *sweep);
+        for (const variant& v : rows)
+            if (v.label != "median" && v.label != "sweep" && !v.bins) add(fast, v);
+        tp.series.push_back(line);
+        tp.series.push_back(fast);
+        if (!sweep) continue;
+        for (const variant& v : rows)
+            if (v.bins) relative.x.push_back(v.bins), relative.y.push_back(v.sah / sweep->sah);
+        cp.series.push_back(relative);
+    }
+    if (!cp.series.empty()) {
+        plot_series one{"full sweep", {}, {}, true, {}, 8};  // grey
+        one.dashed = true;
+        for (const plot_series& ser : cp.series)
+            for (const double b : ser.x) one.x.push_back(b);
+        std::sort(one.x.begin(), one.x.end());
+        one.x = {one.x.front(), one.x.back()};
+        one.y = {1.0, 1.0};
+        cp.series.push_back(one);
+    }
     write_svg(trade, to_svg(tp));
     write_svg(cost, to_svg(cp));
-    std::printf("wrote %s, %s, %s\n", csv.string().c_str(), trade.string().c_str(), cost.string().c_str());
 }
 
 int run(int argc, const char* const* argv) {
@@ -167,10 +240,21 @@ int run(int argc, const char* const* argv) {
         .option("height", "N", "", "rows (default 3/4 of the width)")
         .option("repeats", "K", "3", "timed runs per measurement after a warm-up; the median is reported")
         .option("out", "DIR", "", "write the CSV file, the plots and the heat maps into DIR/ (default out/05_sah/)")
+        .option("replot", "CSV", "", "only redraw the two plots from a bins.csv written earlier (no building, no tracing)")
         .flag("force", "replace existing files in a folder named with --out")
         .flag("quick", "the teapot in a stadium only, 96 x 72 rays, bins 4, 16, 64");
     if (!args.parse(argc, argv)) return 0;
     const bool quick = args.has("quick");
+    const fs::path folder = args.has("out") ? fs::path(args.get("out")) : fs::path("out/05_sah");
+    const fs::path csv = folder / "bins.csv", trade = folder / "build_vs_trace.svg", cost = folder / "bins_vs_sah.svg";
+    // Every file this run writes is checked before the work starts, not after it.
+    for (const fs::path& p : {trade, cost}) prepare_output(p, args.has("out"), args.has("force"));
+    if (args.has("replot")) {
+        write_plots(read_table(args.get("replot")), trade, cost);
+        std::printf("wrote %s, %s from %s\n", trade.string().c_str(), cost.string().c_str(), args.get("replot").c_str());
+        return 0;
+    }
+    prepare_output(csv, args.has("out"), args.has("force"));
     const thread_limit one(1);  // the chapter's figures are single-threaded, as in the race's table
     options o;
     const image_size size = read_image_size(args, quick ? 96 : 192, 4096);
@@ -197,7 +281,9 @@ int run(int argc, const char* const* argv) {
         if (which != "all" && which != name) continue;
         if (const auto s = load_shared_mesh(file, name)) all.emplace_back(name, run_scene(*s, name, o));
     }
-    write_outputs(all, o);
+    write_table(all, csv);
+    write_plots(all, trade, cost);
+    std::printf("wrote %s, %s, %s\n", csv.string().c_str(), trade.string().c_str(), cost.string().c_str());
     std::printf("against Embree on the same rays: build/release/bin/race --accels ch04-median,ch05-sweep,"
                 "ch05-binned16,embree-medium\n");
     return 0;

@@ -5,6 +5,7 @@
 #include <map>
 #include <ostream>
 #include <sstream>
+#include <utility>
 
 namespace strahl::race {
 
@@ -102,23 +103,44 @@ std::string to_markdown(const std::vector<race_row>& rows, const std::string& ma
     return out.str();
 }
 
+namespace {
+
+// A structure's family for the plots' colours ("brute", "ch05", "embree") and its name within it ("binned16").
+std::pair<std::string, std::string> family_of(const std::string& accel) {
+    const std::size_t dash = accel.find('-');
+    if (dash == std::string::npos) return {accel, accel};
+    return {accel.substr(0, dash), accel.substr(dash + 1)};
+}
+
+}  // namespace
+
 void write_plots(const std::filesystem::path& folder, const std::vector<race_row>& rows) {
-    plot speed{"Build time against trace speed (primary rays, closest hit)", "build time [ms]",
-               "trace speed [Mrays/s]", true, true, {}};
+    // Build time against trace speed: one panel per scene, one colour per chapter (and Embree), each point
+    // labelled with its structure's name within the chapter.
+    std::vector<plot> panels;
+    std::map<std::string, std::size_t> panel_of_scene;
+    std::map<std::string, int> colour_of_family;
     bar_chart stairs{"The staircase: primary rays, closest hit, single ray", "Mrays/s", {}, {}, {}, true};
-    std::map<std::string, std::size_t> series_of_scene, category_of_accel;
+    std::map<std::string, std::size_t> category_of_accel;
     for (const race_row& r : rows) {
         if (r.ray_set != "primary" || r.closest.runs == 0) continue;
-        if (!series_of_scene.count(r.scene)) {
-            series_of_scene[r.scene] = speed.series.size();
-            speed.series.push_back({r.scene, {}, {}, false, {}});
+        if (!panel_of_scene.count(r.scene)) {
+            panel_of_scene[r.scene] = panels.size();
+            panels.push_back({r.scene + ": build time against trace speed (primary rays)", "build time [ms]",
+                              "trace speed [Mrays/s]", true, true, {}});
             stairs.series_labels.push_back(r.scene);
             stairs.values.emplace_back();
         }
-        plot_series& s = speed.series[series_of_scene[r.scene]];
-        s.x.push_back(std::max(r.build_ms, 1e-3));
-        s.y.push_back(r.closest.mrays);
-        s.point_labels.push_back(r.accel);
+        const auto [family, name] = family_of(r.accel);
+        if (!colour_of_family.count(family)) colour_of_family.emplace(family, int(colour_of_family.size()));
+        plot& panel = panels[panel_of_scene[r.scene]];
+        auto ser = std::find_if(panel.series.begin(), panel.series.end(),
+                                [&](const plot_series& x) { return x.label == family; });
+        if (ser == panel.series.end())
+            ser = panel.series.insert(panel.series.end(), {family, {}, {}, false, {}, colour_of_family[family]});
+        ser->x.push_back(std::max(r.build_ms, 1e-3));
+        ser->y.push_back(r.closest.mrays);
+        ser->point_labels.push_back(name);
         if (!category_of_accel.count(r.accel)) {
             category_of_accel[r.accel] = stairs.categories.size();
             stairs.categories.push_back(r.accel);
@@ -127,8 +149,8 @@ void write_plots(const std::filesystem::path& folder, const std::vector<race_row
     for (auto& v : stairs.values) v.assign(stairs.categories.size(), 0.0);
     for (const race_row& r : rows)
         if (r.ray_set == "primary" && r.closest.runs)
-            stairs.values[series_of_scene[r.scene]][category_of_accel[r.accel]] = r.closest.mrays;
-    write_svg(folder / "speed_vs_build.svg", to_svg(speed));
+            stairs.values[panel_of_scene[r.scene]][category_of_accel[r.accel]] = r.closest.mrays;
+    write_svg(folder / "speed_vs_build.svg", to_svg(panels, 2));
     write_svg(folder / "staircase.svg", to_svg(stairs));
 }
 
