@@ -1,0 +1,145 @@
+#!/usr/bin/env bash
+# A chapter's program end to end, as a student runs it: --help, a refused unknown option, a small --quick run
+# that writes the files the README promises (PNG images of the asked size, SVG plots, CSV tables with 0 rays
+# differing from brute force where the program checks), no overwriting without --force, a clear error for a
+# folder that cannot be made, and the exercise track's program either working or naming the unfinished
+# exercise (exit 3), never crashing; chapter 05 also redraws its plots from its table (--replot).
+# Usage: chapter_program_test.sh NN PROGRAM EXERCISE_PROGRAM SCRATCH_FOLDER
+set -euo pipefail
+
+if [[ $# -ne 4 ]]; then
+    echo "usage: $0 NN PROGRAM EXERCISE_PROGRAM SCRATCH_FOLDER" >&2
+    exit 2
+fi
+nn=$1 program=$2 exercise=$3 dir=$4
+rm -rf "$dir"
+mkdir -p "$dir"
+failures=0
+
+fail() {
+    echo "FAILED: $*" >&2
+    failures=$((failures + 1))
+}
+
+# contains FILE TEXT WHAT: FILE holds TEXT (a fixed string).
+contains() {
+    grep -qF -- "$2" "$1" || { fail "$3: expected '$2' in:"; sed 's/^/    /' "$1" | head -n 40 >&2; }
+}
+
+# runs WHAT CODE PROGRAM ARGS...: PROGRAM ARGS exits with CODE; stdout in $dir/out, stderr in $dir/err.
+runs() {
+    local what=$1 code=$2 prog=$3
+    shift 3
+    local rc=0
+    "$prog" "$@" >"$dir/out" 2>"$dir/err" || rc=$?
+    if [[ $rc -ne $code ]]; then
+        fail "$what: exit $rc, expected $code"
+        sed 's/^/    /' "$dir/out" "$dir/err" | tail -n 40 >&2
+    fi
+}
+
+# png_size FILE: "WIDTH HEIGHT" from the IHDR chunk, or nothing when FILE is not a PNG.
+png_size() {
+    [[ $(head -c 8 "$1" | od -An -tx1 | tr -d ' \n') == 89504e470d0a1a0a ]] || return 0
+    local w h
+    w=$(od -An -tu1 -j16 -N4 "$1" | awk '{print $1 * 16777216 + $2 * 65536 + $3 * 256 + $4}')
+    h=$(od -An -tu1 -j20 -N4 "$1" | awk '{print $1 * 16777216 + $2 * 65536 + $3 * 256 + $4}')
+    echo "$w $h"
+}
+
+# The run each chapter gets, the files it must write, and the size of the images named in `sized`.
+out=$dir/out_folder
+case $nn in
+01) args=(--quick --width 40 --out "$out/") files=(cornell.png cornell_rays.png teapot.png teapot_rays.png)
+    sized=(teapot.png:"40 30" cornell.png:"40 40") ;;
+02) args=(--quick --width 64 --out "$out") files=(teapot.png teapot_tests.png stadium.png stadium_tests.png
+        lambda_sweep.csv lambda_sweep.svg histogram.svg)
+    sized=(teapot.png:"64 48") ;;
+03) args=(--quick --width 64 --out "$out") files=(teapot.png teapot_planes.png teapot_stadium.png
+        teapot_stadium_planes.png)
+    sized=(teapot.png:"64 48") ;;
+04) args=(--quick --width 64 --out "$out") files=(teapot.png teapot_box_tests.png teapot_stadium.png
+        teapot_stadium_box_tests.png)
+    sized=(teapot.png:"64 48") ;;
+05) args=(--quick --width 48 --repeats 1 --out "$out") files=(bins.csv build_vs_trace.svg bins_vs_sah.svg
+        stadium_box_tests.png)
+    sized=() ;;
+06) args=(--quick --width 48 --repeats 1 --out "$out") files=(refinement.csv sah_vs_time_stadium.svg)
+    sized=() ;;
+*) echo "$0: no end-to-end run known for chapter $nn" >&2; exit 2 ;;
+esac
+
+# --help, and an unknown option refused.
+runs "--help" 0 "$program" --help
+contains "$dir/out" "usage: ch$nn" "--help"
+contains "$dir/out" "--out" "--help"
+runs "unknown option" 2 "$program" --no-such-option
+contains "$dir/err" "unknown option --no-such-option" "unknown option"
+
+# The quick run writes every promised file.
+runs "quick run" 0 "$program" "${args[@]}"
+for f in "${files[@]}"; do
+    [[ -s $out/$f ]] || { fail "quick run: $out/$f missing or empty"; continue; }
+    case $f in
+    *.png) [[ -n $(png_size "$out/$f") ]] || fail "$f is not a PNG file" ;;
+    *.svg) grep -q "<svg" "$out/$f" || fail "$f holds no <svg> element" ;;
+    *.csv) [[ $(wc -l <"$out/$f") -ge 2 ]] || fail "$f has no rows under its header" ;;
+    esac
+done
+for entry in "${sized[@]}"; do
+    f=${entry%%:*} want=${entry#*:}
+    [[ -f $out/$f ]] || continue
+    got=$(png_size "$out/$f")
+    [[ $got == "$want" ]] || fail "$f is $got pixels, expected $want"
+done
+# Every checked row agrees with brute force: a 'differing' column of zeros.
+for f in "${files[@]}"; do
+    [[ $f == *.csv && -f $out/$f ]] || continue
+    col=$(head -n 1 "$out/$f" | tr ',' '\n' | grep -nx differing | cut -d: -f1 || true)
+    [[ -n $col ]] || continue
+    bad=$(awk -F, -v c="$col" 'NR > 1 && $c != 0' "$out/$f")
+    [[ -z $bad ]] || fail "$f: rays differing from brute force in: $bad"
+done
+
+# Chapter 05 redraws its plots from the table it wrote: the same points, and bad tables are refused.
+if [[ $nn == 05 ]]; then
+    runs "--replot" 0 "$program" --replot "$out/bins.csv" --out "$dir/replot"
+    for f in build_vs_trace.svg bins_vs_sah.svg; do
+        [[ $(grep -c "<circle" "$dir/replot/$f" || true) -eq $(grep -c "<circle" "$out/$f" || true) ]] ||
+            fail "--replot: $f has not the same points as the first run's"
+    done
+    echo "scene,tree" >"$dir/bad.csv"
+    runs "--replot of a foreign file" 1 "$program" --replot "$dir/bad.csv" --out "$dir/replot2"
+    contains "$dir/err" "is not a bins.csv written by ch05" "--replot of a foreign file"
+fi
+
+# Nothing is overwritten unless asked: the same run again is refused and leaves the files as they were.
+cp -r "$out" "$dir/before" 2>/dev/null || mkdir -p "$dir/before"
+runs "second run without --force" 1 "$program" "${args[@]}"
+contains "$dir/err" "not overwriting" "second run without --force"
+diff -r "$dir/before" "$out" >/dev/null || fail "a refused run changed files in $out"
+runs "second run with --force" 0 "$program" "${args[@]}" --force
+
+# A folder that cannot be made (it would lie inside a regular file): a clear error, exit 1.
+touch "$dir/plain_file"
+if [[ $nn == 01 ]]; then blocked=$dir/plain_file/sub/; else blocked=$dir/plain_file/sub; fi
+runs "unwritable --out" 1 "$program" "${args[@]:0:${#args[@]}-1}" "$blocked"
+contains "$dir/err" "cannot create folder" "unwritable --out"
+
+# The exercise track's program: either the student's finished work runs (exit 0), or it names the first
+# exercise not yet done, with its file (exit 3).
+rc=0
+"$exercise" "${args[@]:0:${#args[@]}-1}" "$dir/exercise_out/" >"$dir/out" 2>"$dir/err" || rc=$?
+if [[ $rc -eq 3 ]]; then
+    grep -Eq "exercise $nn\.[0-9]+ .* is not done yet: exercises/" "$dir/err" ||
+        { fail "exercise program: exit 3 without naming the exercise"; sed 's/^/    /' "$dir/err" >&2; }
+elif [[ $rc -ne 0 ]]; then
+    fail "exercise program: exit $rc, expected 0 or 3"
+    sed 's/^/    /' "$dir/out" "$dir/err" | tail -n 40 >&2
+fi
+
+if [[ $failures -ne 0 ]]; then
+    echo "ch$nn program end to end: $failures check(s) failed" >&2
+    exit 1
+fi
+echo "ch$nn program end to end: all checks passed"
