@@ -14,17 +14,7 @@ fi
 nn=$1 program=$2 exercise=$3 dir=$4
 rm -rf "$dir"
 mkdir -p "$dir"
-failures=0
-
-fail() {
-    echo "FAILED: $*" >&2
-    failures=$((failures + 1))
-}
-
-# contains FILE TEXT WHAT: FILE holds TEXT (a fixed string).
-contains() {
-    grep -qF -- "$2" "$1" || { fail "$3: expected '$2' in:"; sed 's/^/    /' "$1" | head -n 40 >&2; }
-}
+source "$(dirname "$0")/script_support.sh"
 
 # runs WHAT CODE PROGRAM ARGS...: PROGRAM ARGS exits with CODE; stdout in $dir/out, stderr in $dir/err.
 runs() {
@@ -138,8 +128,4 @@ elif [[ $rc -ne 0 ]]; then
     sed 's/^/    /' "$dir/out" "$dir/err" | tail -n 40 >&2
 fi
 
-if [[ $failures -ne 0 ]]; then
-    echo "ch$nn program end to end: $failures check(s) failed" >&2
-    exit 1
-fi
-echo "ch$nn program end to end: all checks passed"
+finish "ch$nn program"

@@ -12,17 +12,7 @@ trace=$1
 dir=$2
 rm -rf "$dir"
 mkdir -p "$dir"
-failures=0
-
-fail() {
-    echo "FAILED: $*" >&2
-    failures=$((failures + 1))
-}
-
-# contains FILE TEXT WHAT: FILE holds TEXT (a fixed string).
-contains() {
-    grep -qF -- "$2" "$1" || { fail "$3: expected '$2' in:"; sed 's/^/    /' "$1" >&2; }
-}
+source "$(dirname "$0")/../script_support.sh"
 
 # succeeds WHAT ARGS...: strahl-trace ARGS exits 0; its stdout and stderr go to $dir/out.
 succeeds() {
@@ -96,8 +86,4 @@ refuses "a bad number for --width" 2 "--width expects an integer, got '3x'" \
 refuses "an unknown ray set" 1 "unknown ray set 'sideways'" --scene builtin:teapot --gen sideways --width 8 --height 8
 refuses "neither --rays nor --gen" 2 "exactly one of --rays FILE and --gen KIND" --scene builtin:teapot
 
-if [[ $failures -ne 0 ]]; then
-    echo "strahl-trace end to end: $failures check(s) failed" >&2
-    exit 1
-fi
-echo "strahl-trace end to end: all checks passed"
+finish strahl-trace
