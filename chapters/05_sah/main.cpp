@@ -216,13 +216,11 @@ void write_plots(const scene_rows& all, const fs::path& trade, const fs::path& c
         cp.series.push_back(relative);
     }
     if (!cp.series.empty()) {
-        plot_series one{"full sweep", {}, {}, true, {}, 8};  // grey
+        // A dashed grey line at 1 across the bin counts plotted.
+        plot_series one{"full sweep", {}, {1.0, 1.0}, true, {}, 8};
         one.dashed = true;
-        for (const plot_series& ser : cp.series)
-            for (const double b : ser.x) one.x.push_back(b);
-        std::sort(one.x.begin(), one.x.end());
-        one.x = {one.x.front(), one.x.back()};
-        one.y = {1.0, 1.0};
+        const auto [fewest, most] = std::minmax_element(cp.series.front().x.begin(), cp.series.front().x.end());
+        one.x = {*fewest, *most};
         cp.series.push_back(one);
     }
     write_svg(trade, to_svg(tp));
@@ -245,18 +243,20 @@ int run(int argc, const char* const* argv) {
         .flag("quick", "the teapot in a stadium only, 96 x 72 rays, bins 4, 16, 64");
     if (!args.parse(argc, argv)) return 0;
     const bool quick = args.has("quick");
-    const fs::path folder = args.has("out") ? fs::path(args.get("out")) : fs::path("out/05_sah");
-    const fs::path csv = folder / "bins.csv", trade = folder / "build_vs_trace.svg", cost = folder / "bins_vs_sah.svg";
+    options o;
+    if (args.has("out")) o.folder = args.get("out"), o.user_named = true;
+    o.force = args.has("force");
+    const fs::path csv = o.folder / "bins.csv", trade = o.folder / "build_vs_trace.svg",
+                   cost = o.folder / "bins_vs_sah.svg";
     // Every file this run writes is checked before the work starts, not after it.
-    for (const fs::path& p : {trade, cost}) prepare_output(p, args.has("out"), args.has("force"));
+    for (const fs::path& p : {trade, cost}) prepare_output(p, o.user_named, o.force);
     if (args.has("replot")) {
         write_plots(read_table(args.get("replot")), trade, cost);
         std::printf("wrote %s, %s from %s\n", trade.string().c_str(), cost.string().c_str(), args.get("replot").c_str());
         return 0;
     }
-    prepare_output(csv, args.has("out"), args.has("force"));
+    prepare_output(csv, o.user_named, o.force);
     const thread_limit one(1);  // the chapter's figures are single-threaded, as in the race's table
-    options o;
     const image_size size = read_image_size(args, quick ? 96 : 192, 4096);
     o.width = size.width, o.height = size.height;
     o.repeats = args.get_int("repeats");
@@ -268,13 +268,11 @@ int run(int argc, const char* const* argv) {
         !std::isfinite(ct) || !std::isfinite(ci))
         throw usage_error("--costs wants two positive numbers CT,CI, not '" + args.get("costs") + "'");
     o.costs = {ct, ci};
-    if (args.has("out")) o.folder = args.get("out"), o.user_named = true;
-    o.force = args.has("force");
 
     const std::string which = quick ? "stadium" : args.get("scene");
     if (which != "all" && which != "teapot" && which != "stadium" && which != "bunny" && which != "sponza")
         throw usage_error("--scene must be stadium, bunny, sponza, teapot or all, not '" + which + "'");
-    std::vector<std::pair<std::string, std::vector<variant>>> all;
+    scene_rows all;
     if (which == "teapot") all.emplace_back("teapot", run_scene(builtin_scene("teapot"), "teapot", o));
     if (which == "all" || which == "stadium") all.emplace_back("stadium", run_scene(builtin_scene("teapot_stadium"), "stadium", o));
     for (const auto& [name, file] : {std::pair{"bunny", "bunny.ply"}, std::pair{"sponza", "sponza.obj"}}) {

@@ -179,7 +179,7 @@ std::string to_svg(const plot& p, int width, int height) {
         << g.bottom - g.top << "\" fill=\"none\" stroke=\"black\"/>\n";
     // The series: lines first, then the points over them; the points' labels last, placed clear of both.
     std::vector<std::pair<std::string, int>> entries;
-    std::vector<std::array<double, 2>> points, labelled;
+    std::vector<std::array<double, 2>> labelled, unlabelled;  // the points, with and without a label
     std::vector<std::string> texts;
     for (std::size_t si = 0; si < p.series.size(); ++si) {
         const plot_series& s = p.series[si];
@@ -193,9 +193,10 @@ std::string to_svg(const plot& p, int width, int height) {
             path += (path.empty() ? "M" : " L") + std::to_string(x) + " " + std::to_string(y);
             dots += "<circle cx=\"" + std::to_string(x) + "\" cy=\"" + std::to_string(y) + "\" r=\"3.5\" fill=\"" +
                     palette[colour % 10] + "\"/>\n";
-            points.push_back({x, y});
             if (i < s.point_labels.size() && !s.point_labels[i].empty())
                 labelled.push_back({x, y}), texts.push_back(s.point_labels[i]);
+            else
+                unlabelled.push_back({x, y});
         }
         if (s.lines && !path.empty())
             out << "<path d=\"" << path << "\" fill=\"none\" stroke=\"" << palette[colour % 10]
@@ -203,9 +204,9 @@ std::string to_svg(const plot& p, int width, int height) {
         out << dots;
     }
     const label_box frame{g.left, g.top, g.right - g.left, g.bottom - g.top};
-    // The labelled points first, then all points as obstacles (the labelled ones twice: harmless).
+    // The labelled points first (in the order of texts), then the others, as obstacles only.
     std::vector<std::array<double, 2>> anchors = labelled;
-    anchors.insert(anchors.end(), points.begin(), points.end());
+    anchors.insert(anchors.end(), unlabelled.begin(), unlabelled.end());
     const std::vector<label_place> places = place_labels(anchors, texts, frame);
     for (std::size_t i = 0; i < places.size(); ++i) {
         const label_box& b = places[i].box;
