@@ -98,7 +98,7 @@ TEST_CASE("ch05 SAH: two clusters are split apart, and leaves end where splittin
     CHECK(tree_cost(a->tree(), lazy.costs) == Approx(4.0));
 }
 
-TEST_CASE("ch05 SAH: lower cost than the median split; the sweep no worse than bins", "[ch05]") {
+TEST_CASE("ch05 SAH: lower cost than the median split, the sweep no worse than bins", "[ch05]") {
     const scene s = teapot_scene(4);
     const auto median = ch04::make_bvh_accel(false);
     median->build(s);

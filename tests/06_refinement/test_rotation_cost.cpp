@@ -18,7 +18,7 @@ TEST_CASE("06.1 rotation cost: the four rotations at the root of a 4-leaf tree",
     CHECK(rotation_cost(k.t, k.n, rotation::right_left_right, 2.0f) == Approx(116.0f));
 }
 
-TEST_CASE("06.1 rotation cost: a leaf child cannot be rotated into; none costs nothing", "[ch06][pts:3]") {
+TEST_CASE("06.1 rotation cost: a leaf child cannot be rotated into, none costs nothing", "[ch06][pts:3]") {
     const test::tree1 k = test::make_tree1();
     CHECK(rotation_cost(k.t, k.n, rotation::left_right_left, 1.0f) == Approx(-40.0f));
     CHECK(rotation_cost(k.t, k.n, rotation::left_right_right, 1.0f) == Approx(-4.0f));

@@ -238,7 +238,7 @@ TEST_CASE("timer and median", "[common][timer]") {
     CHECK(t.seconds() >= 0.0);
 }
 
-TEST_CASE("progress bar: text shows percentage, rate and ETA; silent off a terminal", "[common][progress]") {
+TEST_CASE("progress bar: text shows percentage, rate and ETA, silent off a terminal", "[common][progress]") {
     const std::string half = progress_bar::format("render", 50, 100, 2.0, "rows", 10);
     CHECK_THAT(half, Contains("render  [#####     ]"));
     CHECK_THAT(half, Contains(" 50%"));
@@ -330,7 +330,7 @@ static int throws_todo(int, const char* const*) { STRAHL_TODO("01.2 ray/sphere")
 static int throws_other(int, const char* const*) { throw std::runtime_error("disk full"); }
 static int returns_zero(int, const char* const*) { return 0; }
 
-TEST_CASE("STRAHL_TODO names the exercise, file and line; guarded_main maps errors to exit codes", "[common][todo]") {
+TEST_CASE("STRAHL_TODO names the exercise, file and line, guarded_main maps errors to exit codes", "[common][todo]") {
     try {
         STRAHL_TODO("05.2 bin the centroids");
     } catch (const not_implemented& e) {

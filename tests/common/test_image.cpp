@@ -39,7 +39,7 @@ TEST_CASE("image: EXR round trip is exact, also for values above one and negativ
     CHECK(d.differing_pixels == 0);
 }
 
-TEST_CASE("image: PNG round trip within 8-bit sRGB quantisation; out-of-range values clamp", "[common][image]") {
+TEST_CASE("image: PNG round trip within 8-bit sRGB quantisation, out-of-range values clamp", "[common][image]") {
     const auto dir = test::scratch_dir("image_png");
     image img = pattern(20, 12);
     img.at(1, 1) = color(3.0f, -1.0f, 0.5f);

@@ -55,7 +55,7 @@ TEST_CASE("plot labels: a crowded cluster gets labels that overlap neither each 
     CHECK(leaders > 0);
 }
 
-TEST_CASE("plot labels: a lone point keeps its label beside it; at the frame's edge the label turns inwards", "[common][plot]") {
+TEST_CASE("plot labels: a lone point keeps its label beside it, at the frame's edge the label turns inwards", "[common][plot]") {
     const label_box frame{0, 0, 300, 200};
     const auto alone = place_labels({{100, 100}}, {"median"}, frame);
     REQUIRE(alone.size() == 1);

@@ -231,7 +231,7 @@ TEST_CASE("procedural: random and clustered soups are deterministic and stay in 
     REQUIRE_THROWS_AS(clustered_soup(10, 1, 0), std::invalid_argument);
 }
 
-TEST_CASE("procedural: builtin scene names round-trip; unknown names list the valid ones", "[common][procedural]") {
+TEST_CASE("procedural: builtin scene names round-trip, unknown names list the valid ones", "[common][procedural]") {
     const auto names = builtin_scene_names();
     CHECK(names == std::vector<std::string>{"cornell", "teapot", "teapot_stadium", "sphere", "soup", "clustered_soup"});
     for (const std::string& name : names) {
