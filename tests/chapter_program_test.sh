@@ -3,7 +3,7 @@
 # that writes the files the README promises (PNG images of the asked size, SVG plots, CSV tables with 0 rays
 # differing from brute force where the program checks), no overwriting without --force, a clear error for a
 # folder that cannot be made, and the exercise track's program either working or naming the unfinished
-# exercise (exit 3), never crashing; chapter 05 also redraws its plots from its table (--replot).
+# exercise (exit 3), never crashing; chapters 05 and 06 also redraw their plots from their tables (--replot).
 # Usage: chapter_program_test.sh NN PROGRAM EXERCISE_PROGRAM SCRATCH_FOLDER
 set -euo pipefail
 
@@ -91,16 +91,32 @@ for f in "${files[@]}"; do
     [[ -z $bad ]] || fail "$f: rays differing from brute force in: $bad"
 done
 
-# Chapter 05 redraws its plots from the table it wrote: the same points, and bad tables are refused.
-if [[ $nn == 05 ]]; then
-    runs "--replot" 0 "$program" --replot "$out/bins.csv" --out "$dir/replot"
-    for f in build_vs_trace.svg bins_vs_sah.svg; do
+# Chapter 01's --sweep: a row per mesh size, tests per ray equal to the primitive count, a plot.
+if [[ $nn == 01 ]]; then
+    runs "--sweep" 0 "$program" --sweep --quick --out "$dir/sweep/"
+    [[ $(tail -n +2 "$dir/sweep/sweep.csv" | wc -l) -eq 4 ]] || fail "--sweep: sweep.csv has not 4 rows"
+    bad=$(awk -F, 'NR > 1 && ($2 != $5 || !($4 > 0))' "$dir/sweep/sweep.csv")
+    [[ -z $bad ]] || fail "--sweep: rows whose tests per ray differ from the primitives or with no speed: $bad"
+    contains "$dir/sweep/sweep.svg" "slope -1" "--sweep's plot"
+fi
+
+# Chapters 05 and 06 redraw their plots from the table they wrote: the same points, and bad tables are refused.
+if [[ $nn == 05 || $nn == 06 ]]; then
+    if [[ $nn == 05 ]]; then table=bins.csv plots=(build_vs_trace.svg bins_vs_sah.svg)
+    else table=refinement.csv plots=(sah_vs_time_stadium.svg); fi
+    runs "--replot" 0 "$program" --replot "$out/$table" --out "$dir/replot"
+    for f in "${plots[@]}"; do
         [[ $(grep -c "<circle" "$dir/replot/$f" || true) -eq $(grep -c "<circle" "$out/$f" || true) ]] ||
             fail "--replot: $f has not the same points as the first run's"
     done
+    runs "--replot again without --force" 1 "$program" --replot "$out/$table" --out "$dir/replot"
+    contains "$dir/err" "not overwriting" "--replot again without --force"
     echo "scene,tree" >"$dir/bad.csv"
     runs "--replot of a foreign file" 1 "$program" --replot "$dir/bad.csv" --out "$dir/replot2"
-    contains "$dir/err" "is not a bins.csv written by ch05" "--replot of a foreign file"
+    contains "$dir/err" "is not a $table written by ch$nn" "--replot of a foreign file"
+    { head -n 1 "$out/$table"; head -n 2 "$out/$table" | tail -n 1 | sed 's/,[^,]*$/,nan/'; } >"$dir/nan.csv"
+    runs "--replot of a NaN" 1 "$program" --replot "$dir/nan.csv" --out "$dir/replot3"
+    contains "$dir/err" "line 2: 'nan' is not a number" "--replot of a NaN"
 fi
 
 # Nothing is overwritten unless asked: the same run again is refused and leaves the files as they were.

@@ -3,6 +3,7 @@
 // Mrays/s, primitive tests per ray. --sweep measures how that cost grows with the triangle count.
 #include "strahl/ch01/render.hpp"
 #include "strahl/parallel.hpp"
+#include "strahl/plot.hpp"
 #include "strahl/procedural.hpp"
 #include "strahl/program.hpp"
 #include "strahl/scene.hpp"
@@ -110,7 +111,8 @@ void sweep(const cli& args, bool quick, const output_plan& plan) {
     const fs::path csv_path = plan.folder / "sweep.csv", svg_path = plan.folder / "sweep.svg";
     prepare_output(csv_path, plan.user_named, args.has("force"));
     prepare_output(svg_path, plan.user_named, args.has("force"));
-    std::printf("sweep: the teapot tessellated ever finer, primary rays only, %d x %d pixels, median of 3 runs\n", w, h);
+    std::printf("sweep: the teapot tessellated ever finer, primary rays only, %d x %d pixels, median of >= 3 runs "
+                "filling >= 0.25 s\n", w, h);
     std::printf("  %9s  %10s  %9s  %8s  %15s\n", "triangles", "primitives", "seconds", "Mrays/s", "tests per ray");
     struct row { std::size_t triangles; double mrays, tests; };
     std::vector<row> rows;
@@ -121,11 +123,13 @@ void sweep(const cli& args, bool quick, const output_plan& plan) {
         const world wd = build_world(s, args.get_int("glossy-samples"));
         render_settings settings;
         settings.primary_only = true;
-        // The median of three runs: the machines are shared and noisy.
-        render_result r;
+        // An untimed warm-up, then the median of at least three runs, and of as many as fill a quarter of a
+        // second (at most 200): the smallest meshes take milliseconds, and the machines are shared and noisy.
+        const camera cam(s.camera, w, h);
+        render_result r = render(wd, cam, settings);
         std::vector<double> seconds;
-        for (int k = 0; k < 3; ++k) {
-            r = render(wd, camera(s.camera, w, h), settings);
+        for (double spent = 0.0; seconds.size() < 3 || (spent < 0.25 && seconds.size() < 200); spent += r.seconds) {
+            r = render(wd, cam, settings);
             seconds.push_back(r.seconds);
         }
         r.seconds = median(seconds);
@@ -137,30 +141,22 @@ void sweep(const cli& args, bool quick, const output_plan& plan) {
         csv << s.mesh.triangle_count() << ',' << wd.primitives.size() << ',' << r.seconds << ',' << mrays << ','
             << c.per_ray(c.prim_tests) << '\n';
     }
-    // A tiny log-log plot: Mrays/s against triangles. A straight line of slope -1 is linear cost.
-    std::ofstream svg(svg_path);
-    const double x0 = std::log10(double(rows.front().triangles)), x1 = std::log10(double(rows.back().triangles));
-    double y0 = 1e300, y1 = -1e300;
-    for (const row& r : rows) { y0 = std::min(y0, std::log10(r.mrays)); y1 = std::max(y1, std::log10(r.mrays)); }
-    if (y1 - y0 < 1e-9) y1 = y0 + 1.0;
-    const auto px = [&](double t) { return 70.0 + 360.0 * (std::log10(t) - x0) / std::max(1e-9, x1 - x0); };
-    const auto py = [&](double m) { return 40.0 + 220.0 * (y1 - std::log10(m)) / (y1 - y0); };
-    svg << "<svg xmlns='http://www.w3.org/2000/svg' width='500' height='310' font-family='sans-serif' "
-           "font-size='12'>\n<rect width='500' height='310' fill='white'/>\n"
-        << "<path d='M60 20 V260 H460' stroke='black' fill='none'/>\n<polyline fill='none' stroke='#c33' "
-           "stroke-width='2' points='";
-    for (const row& r : rows) svg << px(double(r.triangles)) << ',' << py(r.mrays) << ' ';
-    svg << "'/>\n";
+    // Mrays/s against triangles on log-log axes, beside a dashed line of slope -1 through the first point:
+    // what a cost growing exactly linearly with the triangle count would give.
+    plot p{"ch01 brute force: primary rays on the teapot", "triangles", "Mrays/s", true, true, {}};
+    plot_series measured{"measured", {}, {}, true, {}, 0};
     for (const row& r : rows) {
-        svg << "<circle cx='" << px(double(r.triangles)) << "' cy='" << py(r.mrays) << "' r='3' fill='#c33'/>"
-            << "<text x='" << px(double(r.triangles)) << "' y='280' text-anchor='middle'>" << r.triangles
-            << "</text><text x='" << px(double(r.triangles)) + 6 << "' y='" << py(r.mrays) - 6 << "'>"
-            << std::round(r.mrays * 1000.0) / 1000.0 << "</text>\n";
+        char label[32];
+        std::snprintf(label, sizeof label, "%.3g", r.mrays);
+        measured.x.push_back(double(r.triangles));
+        measured.y.push_back(r.mrays);
+        measured.point_labels.push_back(label);
     }
-    svg << "<text x='260' y='302' text-anchor='middle'>triangles (log)</text>\n"
-        << "<text x='14' y='140' transform='rotate(-90 14 140)' text-anchor='middle'>Mrays/s (log)</text>\n"
-        << "<text x='260' y='14' text-anchor='middle'>ch01 brute force: primary rays on the teapot</text>\n"
-        << "</svg>\n";
+    const double t0 = measured.x.front(), t1 = measured.x.back(), m0 = measured.y.front();
+    plot_series linear{"linear cost (slope -1)", {t0, t1}, {m0, m0 * t0 / t1}, true, {}, 8};
+    linear.dashed = true;
+    p.series = {linear, measured};  // the measured line drawn over the reference
+    write_svg(svg_path, to_svg(p));
     std::printf("  wrote    %s, %s\n", csv_path.string().c_str(), svg_path.string().c_str());
 }
 

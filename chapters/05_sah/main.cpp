@@ -142,40 +142,16 @@ void write_table(const scene_rows& all, const fs::path& csv) {
 
 // --replot: the rows of a bins.csv this program wrote, scene by scene in the file's order.
 scene_rows read_table(const fs::path& csv) {
-    std::ifstream f(csv);
-    if (!f) throw std::runtime_error("cannot read '" + csv.string() + "'");
-    std::string line;
-    if (!std::getline(f, line) || line != csv_header)
-        throw std::runtime_error("'" + csv.string() + "' is not a bins.csv written by ch05 (its first line should be '" +
-                                 csv_header + "')");
     scene_rows all;
-    for (int number = 2; std::getline(f, line); ++number) {
-        if (line.empty()) continue;
-        std::vector<std::string> cells;
-        std::istringstream in(line);
-        for (std::string cell; std::getline(in, cell, ',');) cells.push_back(cell);
-        const std::string where = csv.string() + ", line " + std::to_string(number);
-        if (cells.size() != 12) throw std::runtime_error(where + ": 12 fields expected, not " + std::to_string(cells.size()));
-        const auto num = [&](int k) {
-            std::size_t used = 0;
-            double v = 0.0;
-            try {
-                v = std::stod(cells[k], &used);
-            } catch (const std::exception&) {
-                used = 0;
-            }
-            if (used == 0 || used != cells[k].size() || !std::isfinite(v) || v < 0.0)
-                throw std::runtime_error(where + ": '" + cells[k] + "' is not a number >= 0");
-            return v;
-        };
-        variant v{cells[1], int(num(2))};
+    for (const csv_row& r : read_csv(csv, csv_header, "a bins.csv written by ch05")) {
+        const auto num = [&](std::size_t k) { return csv_number(csv, r, k); };
+        variant v{r.cells[1], int(num(2))};
         v.build_ms = num(3), v.sah = num(4), v.nodes = std::size_t(num(5)), v.depth = int(num(6));
         v.primary_mrays = num(7), v.diffuse_mrays = num(8), v.boxes_per_ray = num(9), v.tris_per_ray = num(10);
         v.differing = std::size_t(num(11));
-        if (all.empty() || all.back().first != cells[0]) all.emplace_back(cells[0], std::vector<variant>{});
+        if (all.empty() || all.back().first != r.cells[0]) all.emplace_back(r.cells[0], std::vector<variant>{});
         all.back().second.push_back(v);
     }
-    if (all.empty()) throw std::runtime_error("'" + csv.string() + "' holds no rows");
     return all;
 }
 

@@ -12,6 +12,7 @@
 #include "strahl/procedural.hpp"
 #include "strahl/program.hpp"
 #include "strahl/timer.hpp"
+#include <algorithm>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
@@ -115,41 +116,66 @@ std::vector<row> run_scene(const scene& s, const options& o) {
     return rows;
 }
 
-void write_outputs(const std::vector<row>& rows, const std::vector<std::string>& scenes, const options& o) {
-    const fs::path csv = o.folder / "refinement.csv";
-    std::vector<fs::path> files{csv};
-    for (const std::string& name : scenes) files.push_back(o.folder / ("sah_vs_time_" + name + ".svg"));
-    for (const fs::path& p : files) prepare_output(p, o.user_named, o.force);
+const char* const csv_header = "scene,start,method,budget,iterations,moves,refine_ms,sah_before,sah_after,nodes,depth,"
+                               "primary_mrays_s,diffuse_mrays_s,differing";
+
+void write_table(const std::vector<row>& rows, const fs::path& csv) {
     std::ostringstream text;
-    text << "scene,start,method,budget,iterations,moves,refine_ms,sah_before,sah_after,nodes,depth,"
-            "primary_mrays_s,diffuse_mrays_s,differing\n";
+    text << csv_header << '\n';
     for (const row& r : rows)
         text << r.scene << ',' << r.start << ',' << r.method << ',' << r.budget << ',' << r.iterations << ','
              << r.moves << ',' << r.ms << ',' << r.sah_before << ',' << r.sah_after << ',' << r.nodes << ','
              << r.depth << ',' << r.primary_mrays << ',' << r.diffuse_mrays << ',' << r.differing << '\n';
     std::ofstream f(csv);
-    if (!(f << text.str())) throw std::runtime_error("cannot write " + csv.string());
-    // One plot per scene: the SAH cost's reduction against refinement time (log scale), a series per start
-    // tree and method, a point per iteration budget.
-    for (std::size_t k = 0; k < scenes.size(); ++k) {
-        plot p{"SAH cost reduction against refinement time (" + scenes[k] + ", one thread; labels: budget)",
+    f << text.str();
+    f.close();
+    if (!f) throw std::runtime_error("cannot write " + csv.string());
+}
+
+// --replot: the rows of a refinement.csv this program wrote, in the file's order.
+std::vector<row> read_table(const fs::path& csv) {
+    std::vector<row> rows;
+    for (const csv_row& c : read_csv(csv, csv_header, "a refinement.csv written by ch06")) {
+        const auto num = [&](std::size_t k) { return csv_number(csv, c, k); };
+        row r{c.cells[0], c.cells[1], c.cells[2], int(num(3)), int(num(4)), int(num(10))};
+        r.moves = std::size_t(num(5)), r.nodes = std::size_t(num(9)), r.differing = std::size_t(num(13));
+        r.ms = num(6), r.sah_before = num(7), r.sah_after = num(8), r.primary_mrays = num(11), r.diffuse_mrays = num(12);
+        if (!(r.sah_before > 0)) throw std::runtime_error(csv.string() + ", line " + std::to_string(c.line) +
+                                                          ": an SAH cost of 0 before refinement");
+        rows.push_back(r);
+    }
+    return rows;
+}
+
+// The scenes of a table, in order of first appearance.
+std::vector<std::string> scenes_of(const std::vector<row>& rows) {
+    std::vector<std::string> names;
+    for (const row& r : rows)
+        if (std::find(names.begin(), names.end(), r.scene) == names.end()) names.push_back(r.scene);
+    return names;
+}
+
+fs::path plot_path(const fs::path& folder, const std::string& scene) { return folder / ("sah_vs_time_" + scene + ".svg"); }
+
+// One plot per scene: the SAH cost's reduction against refinement time (log scale), a series per start tree
+// and method, a point per iteration budget.
+void write_plots(const std::vector<row>& rows, const fs::path& folder) {
+    for (const std::string& name : scenes_of(rows)) {
+        plot p{"SAH cost reduction against refinement time (" + name + ", one thread; labels: budget)",
                "refinement time [ms]", "SAH cost reduction [% of the start tree's]", true, false, {}};
         for (const char* start : {"median", "binned16"})
             for (const char* method : {"rotated", "reinserted"}) {
                 plot_series ser{std::string(start) + ", " + method, {}, {}, true, {}};
                 for (const row& r : rows) {
-                    if (r.scene != scenes[k] || r.start != start || r.method != method) continue;
+                    if (r.scene != name || r.start != start || r.method != method) continue;
                     ser.x.push_back(r.ms);
                     ser.y.push_back(100.0 * (1.0 - r.sah_after / r.sah_before));
                     ser.point_labels.push_back(std::to_string(r.budget));
                 }
-                p.series.push_back(ser);
+                if (!ser.x.empty()) p.series.push_back(ser);
             }
-        write_svg(files[k + 1], to_svg(p));
+        write_svg(plot_path(folder, name), to_svg(p));
     }
-    std::printf("wrote %s", csv.string().c_str());
-    for (std::size_t k = 1; k < files.size(); ++k) std::printf(", %s", files[k].string().c_str());
-    std::printf("\n");
 }
 
 int run(int argc, const char* const* argv) {
@@ -163,12 +189,23 @@ int run(int argc, const char* const* argv) {
         .option("height", "N", "", "rows (default 3/4 of the width)")
         .option("repeats", "K", "3", "timed runs per measurement after a warm-up; the median is reported")
         .option("out", "DIR", "", "write the CSV file and the plots into DIR/ (default out/06_refinement/)")
+        .option("replot", "CSV", "", "only redraw the plots from a refinement.csv written earlier (no refining, no tracing)")
         .flag("force", "replace existing files in a folder named with --out")
         .flag("quick", "the teapot in a stadium only, 96 x 72 rays, budgets 1,64 and 1,16,64");
     if (!args.parse(argc, argv)) return 0;
     const bool quick = args.has("quick");
-    const thread_limit one(1);  // the chapter's figures are single-threaded, as in the race's table
     options o;
+    if (args.has("out")) o.folder = args.get("out"), o.user_named = true;
+    o.force = args.has("force");
+    if (args.has("replot")) {
+        const std::vector<row> rows = read_table(args.get("replot"));
+        // Every file is checked before any is written.
+        for (const std::string& name : scenes_of(rows)) prepare_output(plot_path(o.folder, name), o.user_named, o.force);
+        write_plots(rows, o.folder);
+        for (const std::string& name : scenes_of(rows)) std::printf("wrote %s\n", plot_path(o.folder, name).string().c_str());
+        return 0;
+    }
+    const thread_limit one(1);  // the chapter's figures are single-threaded, as in the race's table
     const image_size size = read_image_size(args, quick ? 96 : 192, 4096);
     o.width = size.width, o.height = size.height;
     o.repeats = args.get_int("repeats");
@@ -176,28 +213,30 @@ int run(int argc, const char* const* argv) {
     o.rotation_budgets = parse_int_list(quick && !args.has("rotations") ? "1,64" : args.get("rotations"), "rotations", 1, 10000);
     o.reinsertion_budgets =
         parse_int_list(quick && !args.has("reinsertions") ? "1,16,64" : args.get("reinsertions"), "reinsertions", 1, 10000);
-    if (args.has("out")) o.folder = args.get("out"), o.user_named = true;
-    o.force = args.has("force");
 
     const std::string which = quick ? "stadium" : args.get("scene");
     if (which != "all" && which != "teapot" && which != "stadium" && which != "bunny")
         throw usage_error("--scene must be stadium, bunny, teapot or all, not '" + which + "'");
+    // Every file this run may write is checked before the work starts, not after it.
+    const fs::path csv = o.folder / "refinement.csv";
+    prepare_output(csv, o.user_named, o.force);
+    for (const std::string& name : which == "all" ? std::vector<std::string>{"stadium", "bunny"} : std::vector{which})
+        prepare_output(plot_path(o.folder, name), o.user_named, o.force);
     std::vector<row> rows;
-    std::vector<std::string> scenes;
-    const auto add = [&](const std::string& name, const scene& s) {
+    const auto add = [&](const std::string& name, scene s) {
+        s.name = name;  // the rows' scene, and the plot's file name
         const std::vector<row> r = run_scene(s, o);
         rows.insert(rows.end(), r.begin(), r.end());
-        scenes.push_back(name);
     };
     if (which == "teapot") add("teapot", builtin_scene("teapot"));
-    if (which == "all" || which == "stadium") {
-        scene s = builtin_scene("teapot_stadium");
-        s.name = "stadium";
-        add("stadium", s);
-    }
+    if (which == "all" || which == "stadium") add("stadium", builtin_scene("teapot_stadium"));
     if (which == "all" || which == "bunny")
         if (const auto s = load_shared_mesh("bunny.ply", "bunny")) add("bunny", *s);
-    write_outputs(rows, scenes, o);
+    write_table(rows, csv);
+    write_plots(rows, o.folder);
+    std::printf("wrote %s", csv.string().c_str());
+    for (const std::string& name : scenes_of(rows)) std::printf(", %s", plot_path(o.folder, name).string().c_str());
+    std::printf("\n");
     std::printf("an LBVH start tree comes with chapter 07; against Embree on the same rays: build/release/bin/race "
                 "--accels ch05-binned16,ch06-binned16-rotated,ch06-binned16-reinserted,embree-medium\n");
     return 0;

@@ -174,6 +174,52 @@ std::vector<int> parse_int_list(const std::string& text, const std::string& name
     return out;
 }
 
+namespace {
+std::vector<std::string> split_fields(const std::string& line) {
+    std::vector<std::string> cells;
+    std::istringstream in(line);
+    for (std::string cell; std::getline(in, cell, ',');) cells.push_back(cell);
+    if (!line.empty() && line.back() == ',') cells.emplace_back();  // a trailing empty field counts
+    return cells;
+}
+}  // namespace
+
+std::vector<csv_row> read_csv(const std::filesystem::path& file, const std::string& header, const std::string& what) {
+    std::ifstream f(file);
+    if (!f) throw std::runtime_error("cannot read '" + file.string() + "'");
+    std::string line;
+    if (!std::getline(f, line) || line != header)
+        throw std::runtime_error("'" + file.string() + "' is not " + what + " (its first line should be '" + header +
+                                 "')");
+    const std::size_t fields = split_fields(header).size();
+    std::vector<csv_row> rows;
+    for (int number = 2; std::getline(f, line); ++number) {
+        if (line.empty()) continue;
+        csv_row r{number, split_fields(line)};
+        if (r.cells.size() != fields)
+            throw std::runtime_error(file.string() + ", line " + std::to_string(number) + ": " +
+                                     std::to_string(fields) + " fields expected, not " + std::to_string(r.cells.size()));
+        rows.push_back(std::move(r));
+    }
+    if (rows.empty()) throw std::runtime_error("'" + file.string() + "' holds no rows");
+    return rows;
+}
+
+double csv_number(const std::filesystem::path& file, const csv_row& row, std::size_t k) {
+    const std::string& cell = row.cells.at(k);
+    std::size_t used = 0;
+    double v = 0.0;
+    try {
+        v = std::stod(cell, &used);
+    } catch (const std::exception&) {
+        used = 0;
+    }
+    if (used == 0 || used != cell.size() || !std::isfinite(v) || v < 0.0)
+        throw std::runtime_error(file.string() + ", line " + std::to_string(row.line) + ": '" + cell +
+                                 "' is not a number >= 0");
+    return v;
+}
+
 std::optional<scene> load_shared_mesh(const std::string& file, const std::string& name) {
     const std::filesystem::path p = std::filesystem::path(STRAHL_SHARED_SCENES) / file;
     std::error_code ec;

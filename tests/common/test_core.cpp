@@ -365,3 +365,38 @@ TEST_CASE("prepare_output: creates folders, never overwrites a user's file unask
         chmod((dir / "locked").c_str(), 0700);
     }
 }
+
+TEST_CASE("read_csv and csv_number: a program's own table back, anything else refused with file and line",
+          "[common][csv]") {
+    const auto dir = test::scratch_dir("read_csv");
+    const std::string header = "scene,ms,count";
+    const auto file = [&](const std::string& name, const std::string& text) {
+        std::ofstream(dir / name) << text;
+        return dir / name;
+    };
+    const auto good = file("good.csv", header + "\nbunny,1.5,3\n\nsponza,0,12\n");
+    const std::vector<csv_row> rows = read_csv(good, header, "a test table");
+    REQUIRE(rows.size() == 2);  // the blank line skipped
+    CHECK(rows[0].line == 2);
+    CHECK(rows[1].line == 4);
+    CHECK(rows[1].cells == std::vector<std::string>{"sponza", "0", "12"});
+    CHECK(csv_number(good, rows[0], 1) == 1.5);
+    CHECK(csv_number(good, rows[1], 2) == 12.0);
+
+    CHECK_THROWS_WITH(read_csv(dir / "absent.csv", header, "a test table"), Contains("cannot read"));
+    CHECK_THROWS_WITH(read_csv(file("foreign.csv", "a,b\n1,2\n"), header, "a test table"),
+                      Contains("is not a test table") && Contains(header));
+    CHECK_THROWS_WITH(read_csv(file("empty.csv", ""), header, "a test table"), Contains("is not a test table"));
+    CHECK_THROWS_WITH(read_csv(file("rowless.csv", header + "\n"), header, "a test table"), Contains("holds no rows"));
+    CHECK_THROWS_WITH(read_csv(file("short.csv", header + "\nbunny,1\n"), header, "a test table"),
+                      Contains("line 2") && Contains("3 fields expected, not 2"));
+    CHECK_THROWS_WITH(read_csv(file("trailing.csv", header + "\nbunny,1,2,\n"), header, "a test table"),
+                      Contains("not 4"));
+
+    const auto bad = file("bad.csv", header + "\nx,nan,3\nx,-1,3\nx,1.5ms,3\nx,,3\nx,inf,1e400\n");
+    const std::vector<csv_row> b = read_csv(bad, header, "a test table");
+    REQUIRE(b.size() == 5);
+    for (const csv_row& r : b) CHECK_THROWS_WITH(csv_number(bad, r, 1), Contains("line " + std::to_string(r.line)) &&
+                                                                            Contains("is not a number >= 0"));
+    CHECK_THROWS_WITH(csv_number(bad, b[4], 2), Contains("'1e400'"));  // out of double's range
+}

@@ -68,6 +68,17 @@ image_size read_image_size(const cli& args, int default_width, int max_side);
 // anything else, or on an empty list.
 std::vector<int> parse_int_list(const std::string& text, const std::string& name, int lo, int hi);
 
+// --replot: a CSV file a program wrote earlier, read back. Its first line must be `header` exactly (else the
+// error says it is not `what`, e.g. "a bins.csv written by ch05"); every other non-empty line must have as
+// many comma-separated fields. Throws std::runtime_error naming the file and line otherwise, or if no row.
+struct csv_row {
+    int line = 0;  // the line number in the file, for messages
+    std::vector<std::string> cells;
+};
+std::vector<csv_row> read_csv(const std::filesystem::path& file, const std::string& header, const std::string& what);
+// Field k of a row as a finite number >= 0; throws std::runtime_error naming the file and line otherwise.
+double csv_number(const std::filesystem::path& file, const csv_row& row, std::size_t k);
+
 // One of the course's shared meshes (file, in ../shared/scenes beside the clone), loaded and named `name`
 // for the chapter programs; where it is absent (a clone of its own), prints "NAME: skipped, ..." and
 // returns nothing. A mesh that is there but cannot be read throws, as load_scene does.
