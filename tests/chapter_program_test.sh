@@ -16,18 +16,6 @@ rm -rf "$dir"
 mkdir -p "$dir"
 source "$(dirname "$0")/script_support.sh"
 
-# runs WHAT CODE PROGRAM ARGS...: PROGRAM ARGS exits with CODE; stdout in $dir/out, stderr in $dir/err.
-runs() {
-    local what=$1 code=$2 prog=$3
-    shift 3
-    local rc=0
-    "$prog" "$@" >"$dir/out" 2>"$dir/err" || rc=$?
-    if [[ $rc -ne $code ]]; then
-        fail "$what: exit $rc, expected $code"
-        sed 's/^/    /' "$dir/out" "$dir/err" | tail -n 40 >&2
-    fi
-}
-
 # png_size FILE: "WIDTH HEIGHT" from the IHDR chunk, or nothing when FILE is not a PNG.
 png_size() {
     [[ $(head -c 8 "$1" | od -An -tx1 | tr -d ' \n') == 89504e470d0a1a0a ]] || return 0

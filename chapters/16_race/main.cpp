@@ -6,6 +6,7 @@
 #include "strahl/progress.hpp"
 #include "strahl/race/brute_force.hpp"
 #include "strahl/race/embree_accel.hpp"
+#include "strahl/race/reference_cache.hpp"
 #include "strahl/race/registry.hpp"
 #include "strahl/race/report.hpp"
 #include "strahl/timer.hpp"
@@ -72,7 +73,9 @@ int run(int argc, const char* const* argv) {
         .option("height", "H", "", "image height (default 144, quick 72)")
         .option("repeats", "K", "5", "timed runs after a warm-up; the median is reported")
         .option("budget", "S", "", "seconds one query may take before repeats stop, at least one run (default 4, quick 2)")
-        .option("out", "DIR", "out/16_race", "where the tables, plots and images go")
+        .option("out", "DIR", "out/16_race", "where the tables, plots and images go; brute force's answers are "
+                                             "kept in DIR/reference_cache/ for the next run on the same scene and rays")
+        .flag("no-cache", "trace brute force's answers afresh, neither reading nor writing DIR/reference_cache/")
         .flag("quick", "built-in scenes only, 96x72 rays, 3 repeats: what ./course run runs");
     if (!args.parse(argc, argv)) return 0;
     const bool quick = args.has("quick");
@@ -103,24 +106,30 @@ int run(int argc, const char* const* argv) {
     std::vector<race_row> rows;
     timer total;
     const std::vector<std::string> scenes = args.has("scenes") ? split(args.get("scenes")) : default_scenes(quick);
+    int cached_sets[3] = {0, 0, 0};  // brute force's answer sets: read from the cache, traced, stale
     progress_bar progress("race", scenes.size() * kinds.size() * entries.size(), "rows");
     for (const std::string& spec : scenes) {
         const scene s = load_scene_spec(spec, &std::cout);
         const std::string scene_name = s.name.empty() ? spec : s.name;
         brute_force exact;
         exact.build(s);
+        // Brute force's answers, the reference every structure is checked against: traced on both cores, or
+        // read from the cache of an earlier run (whose files are spot-checked by brute force).
+        reference_cache cache(args.has("no-cache") ? std::filesystem::path() : out / "reference_cache", s, exact,
+                              ref_threads);
         const std::vector<ray> primary = primary_rays(s, w, h);
-        std::vector<hit> primary_hits(primary.size());
-        trace_closest(exact, primary, primary_hits, ref_threads);
+        const std::vector<hit> primary_hits = cache.closest("primary", primary);
         write_image(out / (std::filesystem::path(scene_name).stem().string() + ".png"),
                     primary_image(s, primary, primary_hits, w, h));
 
         for (ray_kind kind : kinds) {
             const std::vector<ray> rays = kind == ray_kind::primary ? primary
                                           : secondary_rays(kind, s, primary, primary_hits, 1);
-            reference ref{std::vector<hit>(rays.size()), std::vector<std::uint8_t>(rays.size())};
-            trace_closest(exact, rays, ref.closest, ref_threads);
-            trace_any(exact, rays, ref.any, ref_threads);
+            // Shadow rays are timed on any hit only, so they need no closest-hit answers.
+            reference ref{kind == ray_kind::primary  ? primary_hits
+                          : kind == ray_kind::shadow ? std::vector<hit>()
+                                                     : cache.closest(to_string(kind), rays),
+                          cache.any(to_string(kind), rays)};
             // Linear-cost structures (brute force) on big scenes trace an evenly spread sample of the rays:
             // at most 5e8 triangle tests a run.
             const std::size_t linear_limit = std::max<std::size_t>(256, std::size_t(5e8 / double(std::max<std::size_t>(1, s.mesh.triangle_count()))));
@@ -148,7 +157,7 @@ int run(int argc, const char* const* argv) {
                     const std::size_t stride = (rays.size() + linear_limit - 1) / linear_limit;
                     for (std::size_t i = 0; i < rays.size(); i += stride) {
                         sampled.push_back(rays[i]);
-                        sub.closest.push_back(ref.closest[i]);
+                        if (!ref.closest.empty()) sub.closest.push_back(ref.closest[i]);
                         sub.any.push_back(ref.any[i]);
                     }
                     traced = sampled;
@@ -162,8 +171,12 @@ int run(int argc, const char* const* argv) {
                 progress.add();
             }
         }
+        cached_sets[0] += cache.loaded(), cached_sets[1] += cache.traced(), cached_sets[2] += cache.stale();
     }
     progress.finish();
+    if (!args.has("no-cache"))
+        std::cout << "reference: " << cached_sets[0] << " answer sets from " << (out / "reference_cache").string()
+                  << ", " << cached_sets[1] << " traced by brute force (" << cached_sets[2] << " stale files replaced)\n";
     add_embree_ratios(rows);
     print_table(std::cout, rows);
     const std::string machine = machine_name();

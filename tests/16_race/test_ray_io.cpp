@@ -309,3 +309,27 @@ TEST_CASE("ch16 ray_io: writing where no file can be written throws format_error
         CHECK_THROWS_AS(write_hits(p, some_hits()), format_error);
     }
 }
+
+TEST_CASE("ch16 ray_io: any-hit flags round-trip, the layout is one byte each, bad flags are refused",
+          "[ch16][ray_io]") {
+    const fs::path dir = test::scratch_dir("ch16_ray_io_flags");
+    const std::vector<std::uint8_t> flags{1, 0, 0, 1, 1};
+    write_flags(dir / "f.bin", flags);
+    CHECK(read_flags(dir / "f.bin") == flags);
+    const std::vector<char> b = file_bytes(dir / "f.bin");
+    REQUIRE(b.size() == 16 + flags.size());
+    CHECK(std::string(b.data(), 8) == "STRAHLF1");
+    for (std::size_t i = 0; i < flags.size(); ++i) CHECK(std::uint8_t(b[16 + i]) == flags[i]);
+    write_flags(dir / "none.bin", std::vector<std::uint8_t>{});
+    CHECK(read_flags(dir / "none.bin").empty());
+
+    const auto read_f = [](const fs::path& f) { return read_flags(f); };
+    std::vector<char> two = b;
+    two[16 + 3] = 2;
+    put_bytes(dir / "two.bin", two);
+    refused(read_f, dir / "two.bin", {"two.bin", "flag 3 is 2, not 0 or 1"});
+    put_bytes(dir / "cut.bin", std::vector<char>(b.begin(), b.end() - 1));
+    refused(read_f, dir / "cut.bin", {"cut.bin", "truncated or corrupt"});
+    write_hits(dir / "h.bin", some_hits());
+    refused(read_f, dir / "h.bin", {"h.bin", "does not start with STRAHLF1"});
+}

@@ -14,6 +14,7 @@ namespace {
 
 constexpr char ray_magic[8] = {'S', 'T', 'R', 'A', 'H', 'L', 'R', '1'};
 constexpr char hit_magic[8] = {'S', 'T', 'R', 'A', 'H', 'L', 'H', '1'};
+constexpr char flag_magic[8] = {'S', 'T', 'R', 'A', 'H', 'L', 'F', '1'};
 constexpr std::size_t header_bytes = 16, ray_bytes = 32, hit_bytes = 16;
 
 void write_file(const std::filesystem::path& file, const char (&magic)[8], std::uint64_t count,
@@ -113,6 +114,21 @@ std::vector<hit> read_hits(const std::filesystem::path& file) {
             throw format_error(where + ": a miss needs t = +inf and primitive id 0xFFFFFFFF together");
     }
     return hits;
+}
+
+void write_flags(const std::filesystem::path& file, std::span<const std::uint8_t> flags) {
+    write_file(file, flag_magic, flags.size(), std::vector<char>(flags.begin(), flags.end()));
+}
+
+std::vector<std::uint8_t> read_flags(const std::filesystem::path& file) {
+    std::uint64_t count = 0;
+    const std::vector<char> data = read_file(file, flag_magic, 1, count);
+    std::vector<std::uint8_t> flags(data.begin(), data.end());
+    for (std::size_t i = 0; i < flags.size(); ++i)
+        if (flags[i] > 1)
+            throw format_error("'" + file.string() + "': flag " + std::to_string(i) + " is " +
+                               std::to_string(flags[i]) + ", not 0 or 1");
+    return flags;
 }
 
 }  // namespace strahl::race

@@ -1,0 +1,56 @@
+// The brute-force reference, remembered on disk. Brute force tests every ray against every triangle: on
+// Sponza (262,205 triangles) one pass over the race's 27,648 rays of a set takes about half a minute on two
+// cores, and a race run again on the same scene and rays needs the very same answers. So each answer set is
+// kept in a file named by a 64-bit hash (FNV-1a) of the triangles' vertices and of the rays, bit for bit,
+// in the race's hit and flag formats (ray_io.hpp).
+//
+// A cached file is never trusted blindly: on loading, a sample of its rays (evenly spread over the set and
+// over the rays it says hit) is traced again by brute force and must agree bit for bit. A changed triangle
+// test, a file from another build or a hash collision thereby shows as a stale file, which is traced again
+// and replaced. (A change that alters none of the sampled rays would slip through: delete the folder to be
+// sure, or run the race with --no-cache.)
+#pragma once
+#include "strahl/race/brute_force.hpp"
+#include <cstdint>
+#include <filesystem>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace strahl::race {
+
+class reference_cache {
+public:
+    // `folder`: where the files go (created when first needed); empty: no cache, every answer traced.
+    // `exact` must have been built on `s`; `threads` trace the reference.
+    reference_cache(std::filesystem::path folder, const scene& s, const brute_force& exact, int threads);
+
+    // The answers of brute force for `rays` (`set` names them in the file name, for people reading the
+    // folder): from the cache when a file is there and its sample agrees, else traced and stored.
+    std::vector<hit> closest(const std::string& set, std::span<const ray> rays);
+    std::vector<std::uint8_t> any(const std::string& set, std::span<const ray> rays);
+
+    // Rays re-traced to check each cached file: this many spread over the set, and as many again over the
+    // rays the file says hit (fewer when there are fewer).
+    static constexpr std::size_t audit_rays = 128;
+
+    // Answer sets so far: read from usable files, traced by brute force, and of those traced, how many
+    // replaced a file that was there but unusable.
+    int loaded() const { return loaded_; }
+    int traced() const { return traced_; }
+    int stale() const { return stale_; }
+
+private:
+    std::filesystem::path file(const std::string& set, const char* query, std::span<const ray> rays) const;
+    template <class Answer, class Read, class Write, class Trace, class Same>
+    std::vector<Answer> answers(const std::string& set, const char* query, std::span<const ray> rays, Read read,
+                                Write write, Trace trace, Same agree);
+
+    std::filesystem::path folder_;
+    std::string stem_;
+    std::uint64_t scene_hash_ = 0;
+    const brute_force& exact_;
+    int threads_ = 1, loaded_ = 0, traced_ = 0, stale_ = 0;
+};
+
+}  // namespace strahl::race

@@ -1,0 +1,189 @@
+// Chapter 16's cache of brute force's answers (reference_cache.hpp): a second run reads exactly what the
+// first traced; a changed scene or ray set gets files of its own; a file that is corrupt, truncated, of the
+// wrong size or whose answers brute force no longer gives is traced again and replaced; a folder that cannot
+// be written costs the cache, never the answers.
+#include "strahl/procedural.hpp"
+#include "strahl/race/ray_io.hpp"
+#include "strahl/race/reference_cache.hpp"
+#include "strahl/race/ray_sets.hpp"
+#include "test_support.hpp"
+#include <bit>
+#include <algorithm>
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <fstream>
+
+using namespace strahl;
+using namespace strahl::race;
+namespace fs = std::filesystem;
+
+namespace {
+
+bool same_bits(const std::vector<hit>& a, const std::vector<hit>& b) {
+    if (a.size() != b.size()) return false;
+    for (std::size_t i = 0; i < a.size(); ++i)
+        if (a[i].prim != b[i].prim || std::bit_cast<std::uint32_t>(a[i].t) != std::bit_cast<std::uint32_t>(b[i].t) ||
+            std::bit_cast<std::uint32_t>(a[i].u) != std::bit_cast<std::uint32_t>(b[i].u) ||
+            std::bit_cast<std::uint32_t>(a[i].v) != std::bit_cast<std::uint32_t>(b[i].v))
+            return false;
+    return true;
+}
+
+std::vector<fs::path> files_in(const fs::path& dir) {
+    std::vector<fs::path> out;
+    if (fs::exists(dir))
+        for (const auto& e : fs::directory_iterator(dir)) out.push_back(e.path());
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+fs::path only_file(const fs::path& dir, const std::string& part) {
+    fs::path found;
+    for (const fs::path& p : files_in(dir))
+        if (p.filename().string().find(part) != std::string::npos) found = p;
+    return found;
+}
+
+struct fixture {
+    scene s = builtin_scene("teapot");
+    brute_force exact;
+    std::vector<ray> rays;
+    std::vector<hit> hits;
+    std::vector<std::uint8_t> blocked;
+    fixture() {
+        exact.build(s);
+        rays = primary_rays(s, 32, 24);
+        hits.resize(rays.size());
+        blocked.resize(rays.size());
+        trace_closest(exact, rays, hits);
+        trace_any(exact, rays, blocked);
+    }
+};
+
+}  // namespace
+
+TEST_CASE("ch16 reference cache: the second run reads what the first traced, bit for bit", "[ch16][cache]") {
+    const fs::path dir = test::scratch_dir("ch16_cache_round_trip") / "cache";
+    fixture f;
+    {
+        reference_cache first(dir, f.s, f.exact, 1);
+        CHECK(same_bits(first.closest("primary", f.rays), f.hits));
+        CHECK(first.any("primary", f.rays) == f.blocked);
+        CHECK(first.traced() == 2);
+        CHECK(first.loaded() == 0);
+    }
+    REQUIRE(files_in(dir).size() == 2);  // one .hits, one .flags; no temporary file left
+    CHECK(only_file(dir, "closest").extension() == ".hits");
+    CHECK(only_file(dir, "any").extension() == ".flags");
+    reference_cache second(dir, f.s, f.exact, 1);
+    CHECK(same_bits(second.closest("primary", f.rays), f.hits));
+    CHECK(second.any("primary", f.rays) == f.blocked);
+    CHECK(second.loaded() == 2);
+    CHECK(second.traced() == 0);
+    CHECK(second.stale() == 0);
+
+    // An empty ray set is cached like any other.
+    CHECK(second.closest("none", std::vector<ray>{}).empty());
+    CHECK(reference_cache(dir, f.s, f.exact, 1).closest("none", std::vector<ray>{}).empty());
+}
+
+TEST_CASE("ch16 reference cache: another scene or other rays get files of their own", "[ch16][cache]") {
+    const fs::path dir = test::scratch_dir("ch16_cache_keys");
+    fixture f;
+    reference_cache(dir, f.s, f.exact, 1).closest("primary", f.rays);
+    REQUIRE(files_in(dir).size() == 1);
+
+    // One ray's tmax a float's step shorter: a new file.
+    std::vector<ray> other = f.rays;
+    other[7].tmax = std::nextafter(other[7].tmax, 0.0f);
+    reference_cache(dir, f.s, f.exact, 1).closest("primary", other);
+    CHECK(files_in(dir).size() == 2);
+
+    // One vertex moved by a float's step: a new file, and answers traced on the new scene.
+    scene moved = f.s;
+    moved.mesh.positions[0].x = std::nextafter(moved.mesh.positions[0].x, 1e9f);
+    brute_force exact_moved;
+    exact_moved.build(moved);
+    reference_cache c(dir, moved, exact_moved, 1);
+    c.closest("primary", f.rays);
+    CHECK(c.traced() == 1);
+    CHECK(files_in(dir).size() == 3);
+}
+
+TEST_CASE("ch16 reference cache: corrupt, truncated and stale files are traced again and replaced",
+          "[ch16][cache]") {
+    const fs::path dir = test::scratch_dir("ch16_cache_stale");
+    fixture f;
+    {
+        reference_cache c(dir, f.s, f.exact, 1);
+        c.closest("primary", f.rays);
+        c.any("primary", f.rays);
+    }
+    const fs::path hits_file = only_file(dir, "closest"), flags_file = only_file(dir, "any");
+    const auto check_replaced = [&](const char* what) {
+        INFO(what);
+        reference_cache c(dir, f.s, f.exact, 1);
+        CHECK(same_bits(c.closest("primary", f.rays), f.hits));
+        CHECK(c.any("primary", f.rays) == f.blocked);
+        CHECK(c.stale() >= 1);
+        // ... and the replaced files are good again.
+        reference_cache again(dir, f.s, f.exact, 1);
+        again.closest("primary", f.rays);
+        again.any("primary", f.rays);
+        CHECK(again.loaded() == 2);
+    };
+
+    // Well-formed files whose answers brute force does not give: every hit's t one step further, every
+    // any-hit answer flipped. The audit's sample catches both.
+    std::vector<hit> wrong = f.hits;
+    std::size_t found = 0;
+    for (hit& h : wrong)
+        if (h.found()) h.t = std::nextafter(h.t, inf), ++found;
+    REQUIRE(found > 0);
+    write_hits(hits_file, wrong);
+    std::vector<std::uint8_t> flipped = f.blocked;
+    for (std::uint8_t& b : flipped) b ^= 1;
+    write_flags(flags_file, flipped);
+    check_replaced("well-formed but wrong answers");
+
+    // One hit's u one step off, the first hit of the set: the audit's sample over the rays that hit always
+    // holds the first of them.
+    std::vector<hit> one = f.hits;
+    for (hit& h : one)
+        if (h.found()) {
+            h.u = std::nextafter(h.u, 1.0f);
+            break;
+        }
+    write_hits(hits_file, one);
+    check_replaced("one hit off by a float's step");
+
+    // Truncated, of another kind, and answering a different number of rays.
+    {
+        std::ifstream in(hits_file, std::ios::binary);
+        std::vector<char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        in.close();
+        std::ofstream(hits_file, std::ios::binary | std::ios::trunc).write(bytes.data(), std::streamsize(bytes.size() - 3));
+    }
+    write_hits(flags_file, f.hits);
+    check_replaced("truncated, and of the wrong kind");
+    write_hits(hits_file, std::vector<hit>(f.hits.begin(), f.hits.end() - 1));
+    write_flags(flags_file, std::vector<std::uint8_t>(f.blocked.size() + 1, 0));
+    check_replaced("answers for a different number of rays");
+}
+
+TEST_CASE("ch16 reference cache: no folder, or one that cannot be written: answers all the same",
+          "[ch16][cache]") {
+    const fs::path dir = test::scratch_dir("ch16_cache_unwritable");
+    fixture f;
+    reference_cache none({}, f.s, f.exact, 1);
+    CHECK(same_bits(none.closest("primary", f.rays), f.hits));
+    CHECK(none.traced() == 1);
+    CHECK(files_in(dir).empty());
+
+    std::ofstream(dir / "plain_file") << "x";
+    reference_cache blocked(dir / "plain_file" / "cache", f.s, f.exact, 1);
+    CHECK(same_bits(blocked.closest("primary", f.rays), f.hits));
+    CHECK(blocked.any("primary", f.rays) == f.blocked);
+    CHECK(blocked.traced() == 2);
+    CHECK(files_in(dir).size() == 1);  // the plain file, nothing else
+}
