@@ -17,8 +17,10 @@ using namespace strahl::race;
 
 namespace {
 
-// Builds every exact structure on s and compares it, ray by ray, with brute force.
-void check_exact_structures(const scene& s, int width, int height) {
+// Builds every exact structure of `entries` (default: the registry's) on s and compares it, ray by ray,
+// with brute force.
+void check_exact_structures(const scene& s, int width, int height,
+                            const std::vector<accel_entry>& entries = registered_accels()) {
     const std::vector<test::reference_set>& sets = test::shared_reference_sets(s, width, height);
     // The sets must be interesting: some rays hit, some miss, and the secondary sets are not empty.
     REQUIRE(test::found(sets[0].closest) > 0);
@@ -27,7 +29,7 @@ void check_exact_structures(const scene& s, int width, int height) {
     REQUIRE(!sets[2].rays.empty());
 
     std::size_t exact_count = 0;
-    for (const accel_entry& e : registered_accels()) {
+    for (const accel_entry& e : entries) {
         std::unique_ptr<accel> a = e.make();
         if (!a->exact()) continue;
         ++exact_count;
@@ -149,5 +151,23 @@ TEST_CASE("ch16 exactness: counted queries give the uncounted results and sensib
                 if (blocked > 0) CHECK(ca->prim_tests < shadow.size() * tris);
             }
         }
+    }
+}
+
+TEST_CASE("ch16 exactness: chapter 05's binned SAH with any bin count, found by name, equals brute force",
+          "[ch16][exactness]") {
+    std::vector<accel_entry> entries;
+    for (const char* name : {"ch05-binned2", "ch05-binned3-fast", "ch05-binned64", "ch05-binned256-fast"}) {
+        INFO(name);
+        entries.push_back(find_accel(name));
+        CHECK(entries.back().name == name);
+        CHECK(entries.back().chapter == "05");
+        CHECK(entries.back().make()->name() == name);
+    }
+    check_exact_structures(builtin_scene("teapot_stadium"), 48, 36, entries);
+    for (const char* bad : {"ch05-binned1", "ch05-binned257", "ch05-binned016", "ch05-binned", "ch05-binned-fast",
+                            "ch05-binned4x", "ch05-binned4-fast-fast", "ch05-binned+4", "ch05-binned 4"}) {
+        INFO(bad);
+        CHECK_THROWS_WITH(find_accel(bad), Catch::Contains(bad) && Catch::Contains("ch05-binnedK"));
     }
 }

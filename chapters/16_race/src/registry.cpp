@@ -7,6 +7,7 @@
 #include "strahl/ch04/accel.hpp"
 #include "strahl/ch05/accel.hpp"
 #include "strahl/ch06/accel.hpp"
+#include <optional>
 #include <stdexcept>
 
 namespace strahl::race {
@@ -71,13 +72,35 @@ std::vector<accel_entry> registered_accels(const registry_options& o) {
     return list;
 }
 
+// ch05-binnedK or ch05-binnedK-fast for K in [2, 256], written without sign or leading zeros; else nothing.
+std::optional<accel_entry> binned_by_name(const std::string& name) {
+    const std::string prefix = "ch05-binned";
+    if (name.rfind(prefix, 0) != 0) return std::nullopt;
+    std::string digits = name.substr(prefix.size());
+    const bool fast = digits.size() > 5 && digits.ends_with("-fast");
+    if (fast) digits.resize(digits.size() - 5);
+    if (digits.empty() || digits.size() > 3 || digits[0] == '0' ||
+        digits.find_first_not_of("0123456789") != std::string::npos)
+        return std::nullopt;
+    const int k = std::stoi(digits);
+    if (k < 2 || k > 256) return std::nullopt;
+    const ch05::sah_build_params p = sah(ch05::sah_method::binned, k);
+    if (fast)
+        return accel_entry{name, "05", "chapter 05's fast binned SAH build with " + digits + " bins, its faster traversal",
+                           [p] { return ch05::make_accel(false, p, ch05::walk_kind::fast); }};
+    return accel_entry{name, "05", "BVH, binned SAH with " + digits + " bins per axis, chapter 04's traversal",
+                       [p] { return ch05::make_accel(false, p); }};
+}
+
 accel_entry find_accel(const std::string& name, const registry_options& options) {
     std::string names;
     for (accel_entry& e : registered_accels(options)) {
         if (e.name == name) return e;
         names += (names.empty() ? "" : ", ") + e.name;
     }
-    throw std::invalid_argument("no structure named '" + name + "' (have: " + names + ")");
+    if (std::optional<accel_entry> e = binned_by_name(name)) return *e;
+    throw std::invalid_argument("no structure named '" + name + "' (have: " + names +
+                                "; and ch05-binnedK, ch05-binnedK-fast for K in 2..256)");
 }
 
 }  // namespace strahl::race

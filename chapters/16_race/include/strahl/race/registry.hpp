@@ -26,7 +26,10 @@ struct registry_options {
 // Embree's entries are present only where Embree was found.
 std::vector<accel_entry> registered_accels(const registry_options& options = {});
 
-// The entry of that name; throws std::invalid_argument listing the names otherwise.
+// The entry of that name; throws std::invalid_argument listing the names otherwise. Beyond the listed
+// names, chapter 05's binned SAH with any number of bins K in [2, 256] is found by name, though not raced
+// by default: ch05-binnedK (chapter 04's traversal) and ch05-binnedK-fast (the fast builder and traversal),
+// e.g. --accels ch05-binned4,ch05-binned64-fast, to see chapter 05's bin-count trade beside Embree.
 accel_entry find_accel(const std::string& name, const registry_options& options = {});
 
 }  // namespace strahl::race
