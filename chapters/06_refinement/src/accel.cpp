@@ -17,12 +17,13 @@ ch04::bvh build_refined_bvh(std::span<const aabb> boxes, std::span<const vec3> c
     return t;
 }
 
-std::unique_ptr<ch04::bvh_accel_base> make_accel(bool virtual_primitives, const refine_params& params) {
-    return ch04::make_bvh_accel(virtual_primitives,
-                                std::string("ch06-") + to_string(params.start) + "-" + to_string(params.method),
-                                [params](std::span<const aabb> b, std::span<const vec3> c) {
-                                    return build_refined_bvh(b, c, params);
-                                });
+std::unique_ptr<ch04::bvh_accel_base> make_accel(bool virtual_primitives, const refine_params& params,
+                                                 ch05::walk_kind walk) {
+    const std::string name = std::string("ch06-") + to_string(params.start) + "-" + to_string(params.method) +
+                             (walk == ch05::walk_kind::fast ? "-fast" : "");
+    return ch05::make_bvh_accel(virtual_primitives, name, [params](std::span<const aabb> b, std::span<const vec3> c) {
+        return build_refined_bvh(b, c, params);
+    }, walk);
 }
 
 }  // namespace strahl::ch06

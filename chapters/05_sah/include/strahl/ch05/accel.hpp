@@ -13,4 +13,9 @@ enum class walk_kind { chapter04, fast };
 std::unique_ptr<ch04::bvh_accel_base> make_accel(bool virtual_primitives, const sah_build_params& params = {},
                                                  walk_kind walk = walk_kind::chapter04);
 
+// Chapter 04's accel over the trees `builder` builds, named `name`, walked by chapter 04's traversal or by
+// the fast one (for later chapters' trees: chapter 06's refined trees, walked fast).
+std::unique_ptr<ch04::bvh_accel_base> make_bvh_accel(bool virtual_primitives, std::string name,
+                                                     ch04::bvh_builder builder, walk_kind walk);
+
 }  // namespace strahl::ch05
