@@ -105,6 +105,12 @@ if [[ $nn == 05 || $nn == 06 ]]; then
     { head -n 1 "$out/$table"; head -n 2 "$out/$table" | tail -n 1 | sed 's/,[^,]*$/,nan/'; } >"$dir/nan.csv"
     runs "--replot of a NaN" 1 "$program" --replot "$dir/nan.csv" --out "$dir/replot3"
     contains "$dir/err" "line 2: 'nan' is not a number" "--replot of a NaN"
+    if [[ $nn == 06 ]]; then
+        { head -n 1 "$out/$table"; head -n 2 "$out/$table" | tail -n 1 | sed 's/^[^,]*,/..\/escape,/'; } >"$dir/path.csv"
+        runs "--replot of a scene named like a path" 1 "$program" --replot "$dir/path.csv" --out "$dir/replot4"
+        contains "$dir/err" "is no plain name" "--replot of a scene named like a path"
+        [[ ! -e $dir/escape.svg && ! -e $dir/sah_vs_time_escape.svg ]] || fail "--replot wrote outside its folder"
+    fi
 fi
 
 # Nothing is overwritten unless asked: the same run again is refused and leaves the files as they were.

@@ -137,6 +137,11 @@ std::vector<row> read_table(const fs::path& csv) {
     std::vector<row> rows;
     for (const csv_row& c : read_csv(csv, csv_header, "a refinement.csv written by ch06")) {
         const auto num = [&](std::size_t k) { return csv_number(csv, c, k); };
+        // The scene names a plot file: letters, digits, '_' and '-' only (no '/', no "..").
+        if (c.cells[0].empty() || c.cells[0].find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                                                               "0123456789_-") != std::string::npos)
+            throw std::runtime_error(csv.string() + ", line " + std::to_string(c.line) + ": scene '" + c.cells[0] +
+                                     "' is no plain name (letters, digits, '_', '-')");
         row r{c.cells[0], c.cells[1], c.cells[2], int(num(3)), int(num(4)), int(num(10))};
         r.moves = std::size_t(num(5)), r.nodes = std::size_t(num(9)), r.differing = std::size_t(num(13));
         r.ms = num(6), r.sah_before = num(7), r.sah_after = num(8), r.primary_mrays = num(11), r.diffuse_mrays = num(12);
