@@ -1,5 +1,5 @@
 // ch06: refining a built BVH. Builds chapter 04's median tree and chapter 05's binned SAH tree (16 bins)
-// over the teapot in a stadium and the bunny (when the shared meshes are there), refines each by tree
+// over the teapot in a stadium, the bunny and Sponza (when the shared meshes are there), refines each by tree
 // rotations (Kensler 2008) and by reinsertion (Bittner, Hapala and Havran 2013) under growing iteration
 // budgets, and prints and plots the trade: SAH cost against refinement time; then traces the same primary
 // and diffuse rays through each start tree and each fully refined tree (Mrays/s before and after). Every
@@ -187,7 +187,7 @@ int run(int argc, const char* const* argv) {
     cli args("ch06", "Chapter 06, refining a BVH (" STRAHL_TRACK "): tree rotations and reinsertion on chapter "
              "04's median tree and chapter 05's binned SAH tree; SAH cost against refinement time per "
              "iteration budget, and Mrays/s before and after, as a table, a CSV file and a plot per scene.");
-    args.option("scene", "NAME", "all", "stadium, bunny, teapot or all (all: stadium, bunny)")
+    args.option("scene", "NAME", "all", "stadium, bunny, sponza, teapot or all (all: stadium, bunny, sponza)")
         .option("rotations", "LIST", "1,2,4,8,64", "comma-separated budgets of rotation passes")
         .option("reinsertions", "LIST", "1,4,16,64,256", "comma-separated budgets of reinsertion batches")
         .option("width", "N", "", "primary rays per row (default 192, 96 with --quick)")
@@ -220,12 +220,12 @@ int run(int argc, const char* const* argv) {
         parse_int_list(quick && !args.has("reinsertions") ? "1,16,64" : args.get("reinsertions"), "reinsertions", 1, 10000);
 
     const std::string which = quick ? "stadium" : args.get("scene");
-    if (which != "all" && which != "teapot" && which != "stadium" && which != "bunny")
-        throw usage_error("--scene must be stadium, bunny, teapot or all, not '" + which + "'");
+    if (which != "all" && which != "teapot" && which != "stadium" && which != "bunny" && which != "sponza")
+        throw usage_error("--scene must be stadium, bunny, sponza, teapot or all, not '" + which + "'");
     // Every file this run may write is checked before the work starts, not after it.
     const fs::path csv = o.folder / "refinement.csv";
     prepare_output(csv, o.user_named, o.force);
-    for (const std::string& name : which == "all" ? std::vector<std::string>{"stadium", "bunny"} : std::vector{which})
+    for (const std::string& name : which == "all" ? std::vector<std::string>{"stadium", "bunny", "sponza"} : std::vector{which})
         prepare_output(plot_path(o.folder, name), o.user_named, o.force);
     std::vector<row> rows;
     const auto add = [&](const std::string& name, scene s) {
@@ -235,8 +235,9 @@ int run(int argc, const char* const* argv) {
     };
     if (which == "teapot") add("teapot", builtin_scene("teapot"));
     if (which == "all" || which == "stadium") add("stadium", builtin_scene("teapot_stadium"));
-    if (which == "all" || which == "bunny")
-        if (const auto s = load_shared_mesh("bunny.ply", "bunny")) add("bunny", *s);
+    for (const auto& [name, file] : {std::pair{"bunny", "bunny.ply"}, std::pair{"sponza", "sponza.obj"}})
+        if (which == "all" || which == name)
+            if (const auto s = load_shared_mesh(file, name)) add(name, *s);
     write_table(rows, csv);
     write_plots(rows, o.folder);
     std::printf("wrote %s", csv.string().c_str());
