@@ -1,4 +1,5 @@
 #include "strahl/race/reference_cache.hpp"
+#include "strahl/race/measure.hpp"
 #include "strahl/race/ray_io.hpp"
 #include "strahl/race/ray_sets.hpp"
 #include "strahl/scene.hpp"
@@ -25,11 +26,9 @@ struct fnv1a {
     }
 };
 
-bool same(const hit& a, const hit& b) {
-    return a.prim == b.prim && std::bit_cast<std::uint32_t>(a.t) == std::bit_cast<std::uint32_t>(b.t) &&
-           std::bit_cast<std::uint32_t>(a.u) == std::bit_cast<std::uint32_t>(b.u) &&
-           std::bit_cast<std::uint32_t>(a.v) == std::bit_cast<std::uint32_t>(b.v);
-}
+// The race's own rule for exact structures (measure.hpp): both misses, or the same primitive with
+// bit-identical t, u and v.
+bool same(const hit& a, const hit& b) { return agrees(a, b, true); }
 
 // The audit's rays: up to reference_cache::audit_rays evenly spread over the set, and as many again evenly
 // spread over the rays the file says hit something (in a set where most rays miss, the first alone would
