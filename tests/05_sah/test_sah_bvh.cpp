@@ -148,6 +148,14 @@ TEST_CASE("ch05 SAH: planar, one triangle, empty, identical and collinear triang
     check_exact(mesh_only(line), 400);
 }
 
+TEST_CASE("ch05 SAH: both traversals equal brute force on a scene far from the origin", "[ch05][adversarial]") {
+    // The fast slab test rounds relative to |plane| + |origin| (slab_test.hpp): at 1e5 from the origin a float
+    // step is 1/128, coarse against the teapot's own size.
+    triangle_mesh far = teapot_scene(3).mesh;
+    for (vec3& p : far.positions) p += vec3(3e4f, -1e5f, 2e4f);
+    check_exact(mesh_only(far), 600);
+}
+
 TEST_CASE("ch05 SAH: centroids in a geometric series keep the depth bounded", "[ch05][adversarial]") {
     // Each split peels one triangle off the rest: without the depth limit, a tree as deep as the input.
     triangle_mesh m;

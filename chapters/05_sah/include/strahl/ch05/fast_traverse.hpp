@@ -4,61 +4,26 @@
 //      the split axis's sign) is visited first; a child whose box the ray misses is never fetched;
 //   2. the far child goes on the stack with its entry distance, and is dropped when popped if a hit found
 //      since lies before it;
-//   3. the slab test is inline and branch-free: the near and far planes per axis are chosen once per ray
-//      from the direction's signs (the ray's octant), so no swap and no NaN test per box.
+//   3. the slab test is inline and branch-free (slab_test.hpp): the near and far planes per axis are chosen
+//      once per ray from the direction's signs, so no swap and no NaN test per box; and where the ray allows
+//      it a plane's t is one multiply and one subtract, its rounding bounded once per ray, not per box.
 //   T. L. Kay and J. T. Kajiya, "Ray tracing complex scenes", SIGGRAPH 1986 (slabs);
-//   A. Williams, S. Barrus, R. K. Morley and P. Shirley, "An efficient and robust ray-box intersection
-//   algorithm", Journal of Graphics Tools 10(1), 2005 (near and far planes from the direction's signs);
-//   T. Ize, "Robust BVH ray traversal", Journal of Computer Graphics Techniques 2(2), 2013 (widening);
 //   T. Aila and S. Laine, "Understanding the efficiency of ray traversal on GPUs", HPG 2009 (children
 //   tested at the parent, distance-ordered).
 #pragma once
 #include "strahl/ch04/traverse.hpp"
+#include "strahl/ch05/slab_test.hpp"
 #include "strahl/tree_query.hpp"
 #include <cmath>
+#include <optional>
 
 namespace strahl::ch05 {
 
-// What the slab test needs of a ray, computed once: origin, 1 / direction, and per axis which of a node's
-// six floats (bmin[0..2], bmax[0..2]) is the near plane (bmax when the direction's sign bit is set, -0
-// included) and which the far one.
-struct slab_ray {
-    vec3 org, inv_dir;
-    int near_plane[3], far_plane[3];
-
-    explicit slab_ray(const ray& r) : org(r.org), inv_dir(1.0f / r.dir) {
-        for (int a = 0; a < 3; ++a) {
-            const bool down = std::signbit(r.dir[a]);
-            near_plane[a] = down ? 3 + a : a;
-            far_plane[a] = down ? a : 3 + a;
-        }
-    }
-};
-
-// The entry distance of node n's box for t in [tmin, tmax], or +inf when the ray misses it. Where the
-// origin lies on a plane and the direction component is +-0, the plane's t is NaN (0 * inf); the
-// comparisons below are written so that a NaN never wins (the ray runs in the plane: no constraint), as
-// chapter 04's slab test skips such an axis. The exit is widened by 1 + 2 gamma(3) (conservative).
-inline float entry_distance(const ch04::bvh_node& n, const slab_ray& s, float tmin, float tmax) {
-    const float* planes = n.bmin;  // bmin[0..2] then bmax[0..2]: six consecutive floats (bvh.hpp)
-    float t0 = tmin, t1 = tmax;
-    for (int a = 0; a < 3; ++a) {
-        const float near = (planes[s.near_plane[a]] - s.org[a]) * s.inv_dir[a];
-        const float far = (planes[s.far_plane[a]] - s.org[a]) * s.inv_dir[a];
-        t0 = near > t0 ? near : t0;
-        t1 = far < t1 ? far : t1;
-    }
-    t1 *= t1 > 0.0f ? 1.0f + 2.0f * ch04::gamma(3) : 1.0f - 2.0f * ch04::gamma(3);
-    return t0 <= t1 ? t0 : inf;
-}
-
-// Visits the leaves whose boxes the ray meets, nearer child first; leaf(first, count) as in chapter 04.
-template <class Stats, class LeafTest>
-void fast_traverse(const ch04::bvh& tree, ray& r, Stats& stats, LeafTest&& leaf) {
-    if (tree.nodes.empty()) return;
+// The walk with either slab test (slab_test.hpp): s.entry(node, t0, t1) is the node box's entry distance
+// for t in [t0, t1], or +inf for a miss.
+template <class Slab, class Stats, class LeafTest>
+void walk_with(const ch04::bvh& tree, const Slab& s, float slack, ray& r, Stats& stats, LeafTest&& leaf) {
     static_assert(offsetof(ch04::bvh_node, bmax) == 3 * sizeof(float), "bmin and bmax are adjacent");
-    const slab_ray s(r);
-    const float slack = ray_slack(r, tree.bounds);
     const ch04::bvh_node* nodes = tree.nodes.data();
     struct entry {
         std::uint32_t index;
@@ -67,7 +32,7 @@ void fast_traverse(const ch04::bvh& tree, ray& r, Stats& stats, LeafTest&& leaf)
     entry stack[ch04::bvh_max_depth + 2];
     int top = 0;
     stats.box_test();
-    if (entry_distance(nodes[0], s, r.tmin - slack, r.tmax + slack) == inf) return;
+    if (s.entry(nodes[0], r.tmin - slack, r.tmax + slack) == inf) return;
     std::uint32_t index = 0;
     for (;;) {
         const ch04::bvh_node& n = nodes[index];
@@ -79,8 +44,8 @@ void fast_traverse(const ch04::bvh& tree, ray& r, Stats& stats, LeafTest&& leaf)
             // Both children's boxes, here at the parent.
             const std::uint32_t left = index + 1, right = n.offset;
             const float lo = r.tmin - slack, hi = r.tmax + slack;
-            const float t_left = entry_distance(nodes[left], s, lo, hi);
-            const float t_right = entry_distance(nodes[right], s, lo, hi);
+            const float t_left = s.entry(nodes[left], lo, hi);
+            const float t_right = s.entry(nodes[right], lo, hi);
             stats.box_test(2);
             if (t_left != inf && t_right != inf) {
                 // Both: the nearer now, the farther on the stack with its entry distance.
@@ -104,6 +69,18 @@ void fast_traverse(const ch04::bvh& tree, ray& r, Stats& stats, LeafTest&& leaf)
             }
         }
     }
+}
+
+// Visits the leaves whose boxes the ray meets, nearer child first; leaf(first, count) as in chapter 04. The
+// fast slab test where the ray allows it, else the robust one: both conservative, so the answers are the same.
+template <class Stats, class LeafTest>
+void fast_traverse(const ch04::bvh& tree, ray& r, Stats& stats, LeafTest&& leaf) {
+    if (tree.nodes.empty()) return;
+    const float slack = ray_slack(r, tree.bounds);
+    if (const std::optional<fast_slab> s = fast_slab::make(r, tree.bounds))
+        walk_with(tree, *s, slack, r, stats, leaf);
+    else
+        walk_with(tree, robust_slab(r), slack, r, stats, leaf);
 }
 
 // fast_traverse as chapter 04's bvh_accel_t's Walk.
