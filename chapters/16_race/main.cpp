@@ -6,10 +6,12 @@
 #include "strahl/progress.hpp"
 #include "strahl/race/brute_force.hpp"
 #include "strahl/race/embree_accel.hpp"
+#include "strahl/race/processes.hpp"
 #include "strahl/race/reference_cache.hpp"
 #include "strahl/race/registry.hpp"
 #include "strahl/race/report.hpp"
 #include "strahl/timer.hpp"
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -61,6 +63,61 @@ image primary_image(const scene& s, std::span<const ray> rays, const std::vector
     return img;
 }
 
+// race --processes N: this program run N times as fresh processes, each into DIR/processes/K/ and sharing one
+// reference cache; their rows combined into DIR's tables and plots (processes.hpp).
+int race_processes(int n, int argc, const char* const* argv, const std::filesystem::path& out,
+                   const std::filesystem::path& cache_dir) {
+    std::vector<std::string> base;
+    for (int i = 1; i < argc; ++i)
+        if (std::string(argv[i]) != "--reverse") base.push_back(argv[i]);
+    const bool reverse = std::find(argv + 1, argv + argc, std::string("--reverse")) != argv + argc;
+    std::cout << "race: " << n << " processes, each writing into " << (out / "processes").string() << "/\n";
+    std::vector<std::vector<race_row>> results;
+    timer total;
+    progress_bar progress("race", n, "processes");
+    for (int k = 1; k <= n; ++k) {
+        const std::filesystem::path folder = out / "processes" / std::to_string(k), log = folder / "race.log";
+        prepare_output(log, false, false);
+        std::vector<std::string> args = base;
+        for (const std::string& a : {std::string("--processes"), std::string("1"), std::string("--out"), folder.string(),
+                                     std::string("--cache"), cache_dir.string()})
+            args.push_back(a);
+        if (reverse != (k % 2 == 0)) args.push_back("--reverse");
+        const int rc = run_self(args, log);
+        // Exit 1 with a race.csv: rows differing from brute force, which the combined table shows again.
+        if (rc != 0 && !(rc == 1 && std::filesystem::exists(folder / "race.csv")))
+            throw std::runtime_error("process " + std::to_string(k) + " of the race failed (exit status " +
+                                     std::to_string(rc) + "): see " + log.string());
+        results.push_back(read_race_csv(folder / "race.csv"));
+        progress.add();
+    }
+    progress.finish();
+
+    const std::vector<combined_row> combined = combine_processes(results);
+    std::vector<race_row> rows;
+    for (const combined_row& c : combined) rows.push_back(c.row);
+    print_table(std::cout, rows);
+    const std::string machine = machine_name();
+    std::ofstream(out / "race.csv") << to_csv(rows);
+    std::ofstream(out / "race.md") << to_markdown(rows, machine, n);
+    std::ofstream(out / "spread.md") << spread_markdown(combined, n, machine);
+    write_plots(out, rows);
+    // The scene images: the first process's (every process draws the same).
+    for (const auto& f : std::filesystem::directory_iterator(out / "processes" / "1"))
+        if (f.path().extension() == ".png")
+            std::filesystem::copy_file(f.path(), out / f.path().filename(), std::filesystem::copy_options::overwrite_existing);
+    std::printf("\nmachine: %s; %d processes took %.1f s\n", machine.c_str(), n, total.seconds());
+    std::cout << "every figure above is the median across the processes; each figure's spread is in "
+              << (out / "spread.md").string() << "\nwrote " << (out / "race.csv").string()
+              << ", race.md, spread.md, speed_vs_build.svg, staircase.svg and scene images\n";
+    const std::size_t wrong = wrong_rows(rows);
+    if (wrong) {
+        std::cout << wrong << " row(s) of course structures differ from brute force in some process: a bug.\n";
+        return 1;
+    }
+    return 0;
+}
+
 int run(int argc, const char* const* argv) {
     cli args("race", "Every structure on every scene and ray set, measured the same way, Embree beside them.\n"
                      "Writes out/16_race/race.csv, race.md, speed_vs_build.svg, staircase.svg and one image per scene.");
@@ -75,7 +132,14 @@ int run(int argc, const char* const* argv) {
         .option("budget", "S", "", "seconds one query may take before repeats stop, at least one run (default 4, quick 2)")
         .option("out", "DIR", "out/16_race", "where the tables, plots and images go; brute force's answers are "
                                              "kept in DIR/reference_cache/ for the next run on the same scene and rays")
-        .flag("no-cache", "trace brute force's answers afresh, neither reading nor writing DIR/reference_cache/")
+        .option("cache", "DIR", "", "where brute force's answers are kept (default: DIR/reference_cache/ of --out)")
+        .option("cache-limit", "MB", "256", "after the race, remove the cache's least recently used files (not this "
+                                            "run's) until it holds at most MB megabytes")
+        .flag("no-cache", "trace brute force's answers afresh, neither reading nor writing the cache")
+        .option("processes", "N", "1", "run the race N times, each a fresh process (every second one measuring the "
+                                       "structures in reverse order), and report each figure's median across them; "
+                                       "writes DIR/spread.md and each process's files under DIR/processes/")
+        .flag("reverse", "measure the structures in reverse order")
         .flag("quick", "built-in scenes only, 96x72 rays, 3 repeats: what ./course run runs");
     if (!args.parse(argc, argv)) return 0;
     const bool quick = args.has("quick");
@@ -91,6 +155,13 @@ int run(int argc, const char* const* argv) {
     if (rules.repeats < 1 || rules.budget_s <= 0.0) throw usage_error("--repeats and --budget must be positive");
     const std::filesystem::path out = args.get("out");
     prepare_output(out / "race.csv", false, false);
+    const std::filesystem::path cache_dir = args.has("cache") ? std::filesystem::path(args.get("cache")) : out / "reference_cache";
+    const auto started = std::filesystem::file_time_type::clock::now();
+    const double cache_limit_mb = args.get_double("cache-limit");
+    if (!(cache_limit_mb >= 0.0)) throw usage_error("--cache-limit must be a number of megabytes >= 0");
+    const int processes = args.get_int("processes");
+    if (processes < 1 || processes > 1000) throw usage_error("--processes must be in 1..1000");
+    if (processes > 1) return race_processes(processes, argc, argv, out, cache_dir);
 
     std::vector<ray_kind> kinds;
     for (const std::string& k : split(args.get("rays"))) kinds.push_back(parse_ray_kind(k));
@@ -98,6 +169,7 @@ int run(int argc, const char* const* argv) {
     std::vector<accel_entry> entries;
     if (args.has("accels")) for (const std::string& n : split(args.get("accels"))) entries.push_back(find_accel(n, reg));
     else entries = registered_accels(reg);
+    if (args.has("reverse")) std::reverse(entries.begin(), entries.end());
     if (!embree_available()) std::cout << "Embree 3 was not found at build time: the race runs without it.\n";
     std::cout << "race: " << w << "x" << h << " rays per set, " << threads << " thread" << (threads > 1 ? "s" : "")
               << ", median of " << rules.repeats << " after a warm-up (" << rules.budget_s << " s budget per query)\n";
@@ -115,7 +187,7 @@ int run(int argc, const char* const* argv) {
         exact.build(s);
         // Brute force's answers, the reference every structure is checked against: traced on both cores, or
         // read from the cache of an earlier run (whose files are spot-checked by brute force).
-        reference_cache cache(args.has("no-cache") ? std::filesystem::path() : out / "reference_cache", s, exact,
+        reference_cache cache(args.has("no-cache") ? std::filesystem::path() : cache_dir, s, exact,
                               ref_threads);
         const std::vector<ray> primary = primary_rays(s, w, h);
         const std::vector<hit> primary_hits = cache.closest("primary", primary);
@@ -174,9 +246,14 @@ int run(int argc, const char* const* argv) {
         cached_sets[0] += cache.loaded(), cached_sets[1] += cache.traced(), cached_sets[2] += cache.stale();
     }
     progress.finish();
-    if (!args.has("no-cache"))
-        std::cout << "reference: " << cached_sets[0] << " answer sets from " << (out / "reference_cache").string()
+    if (!args.has("no-cache")) {
+        std::cout << "reference: " << cached_sets[0] << " answer sets from " << cache_dir.string()
                   << ", " << cached_sets[1] << " traced by brute force (" << cached_sets[2] << " stale files replaced)\n";
+        const pruned_files p = prune_reference_cache(cache_dir, std::uintmax_t(cache_limit_mb * 1e6), started);
+        if (p.files)
+            std::printf("reference cache: removed %d files (%.1f MB) used least recently, to keep it under %g MB "
+                        "(--cache-limit)\n", p.files, double(p.bytes) / 1e6, cache_limit_mb);
+    }
     add_embree_ratios(rows);
     print_table(std::cout, rows);
     const std::string machine = machine_name();

@@ -2,7 +2,7 @@
 # The race end to end, small: --help, a refused option, a tiny run writing its tables, plots and scene image
 # with 0 rays differing from brute force; a second run reading brute force's answers from the reference
 # cache and giving the same answers; a tampered cache file traced again and replaced; --no-cache neither
-# reading nor writing the cache.
+# reading nor writing the cache; --processes 2 combining two fresh processes.
 # Usage: race_test.sh PATH/TO/race SCRATCH_FOLDER
 set -euo pipefail
 
@@ -47,5 +47,24 @@ contains "$dir/out" "1 stale files replaced" "tampered cache"
 
 runs "--no-cache" 0 "$race" "${tiny[@]}" --out "$dir/fresh" --no-cache
 [[ ! -e $dir/fresh/reference_cache ]] || fail "--no-cache wrote a cache"
+
+# Several fresh processes sharing one cache: each process's files under processes/K, the second measuring
+# the structures in reverse order, the combined tables and spread.md beside them, in the first's row order.
+many=$dir/many
+runs "--processes 0" 2 "$race" "${tiny[@]}" --out "$many" --processes 0
+contains "$dir/err" "--processes must be in" "--processes 0"
+runs "--processes 2" 0 "$race" "${tiny[@]}" --out "$many" --processes 2 --cache "$out/reference_cache"
+for f in race.csv race.md spread.md speed_vs_build.svg staircase.svg teapot.png processes/1/race.csv \
+    processes/2/race.csv processes/1/race.log; do
+    [[ -s $many/$f ]] || fail "--processes 2: $many/$f missing or empty"
+done
+[[ ! -e $many/reference_cache ]] || fail "--processes 2 --cache elsewhere wrote a cache in --out"
+contains "$many/processes/2/race.log" "5 answer sets from" "the processes read the shared cache"
+contains "$many/spread.md" "2 fresh processes" "spread.md"
+first_order=$(cut -d, -f3,6 "$many/processes/1/race.csv" | tail -n +2)
+second_order=$(cut -d, -f3,6 "$many/processes/2/race.csv" | tail -n +2)
+[[ $first_order == "$(cut -d, -f3,6 "$many/race.csv" | tail -n +2)" ]] || fail "combined rows not in the first process's order"
+[[ $first_order != "$second_order" ]] || fail "the second process did not reverse the structures"
+[[ $(sort <<<"$first_order") == $(sort <<<"$second_order") ]] || fail "the two processes measured different rows"
 
 finish race

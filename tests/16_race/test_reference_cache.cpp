@@ -187,3 +187,61 @@ TEST_CASE("ch16 reference cache: no folder, or one that cannot be written: answe
     CHECK(blocked.traced() == 2);
     CHECK(files_in(dir).size() == 1);  // the plain file, nothing else
 }
+
+TEST_CASE("ch16 reference cache: pruning removes the least recently used of the cache's own files", "[ch16][cache]") {
+    const fs::path dir = strahl::test::scratch_dir("ch16_cache_prune");
+    const auto now = fs::file_time_type::clock::now();
+    using std::chrono::hours;
+    // Five cache files of 1,000 bytes, used 5 to 1 hours ago, and a file of the user's, older than all.
+    const std::vector<std::string> names = {"bunny_primary_closest_0123456789abcdef.hits",
+                                            "bunny_primary_any_0123456789abcdef.flags",
+                                            "sponza_diffuse_closest_fedcba9876543210.hits",
+                                            "sponza_diffuse_any_fedcba9876543210.flags",
+                                            "teapot_shadow_any_00000000000000aa.flags.tmp"};
+    for (std::size_t k = 0; k < names.size(); ++k) {
+        std::ofstream(dir / names[k]) << std::string(1000, 'x');
+        fs::last_write_time(dir / names[k], now - hours(5 - int(k)));
+    }
+    std::ofstream(dir / "my_notes.hits") << std::string(5000, 'x');
+    fs::last_write_time(dir / "my_notes.hits", now - hours(10));
+
+    SECTION("within the limit: nothing removed") {
+        const pruned_files p = prune_reference_cache(dir, 5000, now);
+        CHECK(p.files == 0);
+        CHECK(files_in(dir).size() == 6);
+    }
+    SECTION("over it: the oldest of the cache's files go first, the user's file stays") {
+        const pruned_files p = prune_reference_cache(dir, 2500, now);
+        CHECK(p.files == 3);
+        CHECK(p.bytes == 3000);
+        CHECK_FALSE(fs::exists(dir / names[0]));
+        CHECK_FALSE(fs::exists(dir / names[2]));
+        CHECK(fs::exists(dir / names[3]));
+        CHECK(fs::exists(dir / names[4]));
+        CHECK(fs::exists(dir / "my_notes.hits"));
+    }
+    SECTION("files used since the run began stay, even over the limit") {
+        const pruned_files p = prune_reference_cache(dir, 0, now - hours(3) - std::chrono::minutes(30));
+        CHECK(p.files == 2);  // the two used before then
+        CHECK(fs::exists(dir / names[2]));
+        CHECK(files_in(dir).size() == 4);
+    }
+    SECTION("a missing folder: nothing to do") {
+        CHECK(prune_reference_cache(dir / "absent", 0, now).files == 0);
+    }
+}
+
+TEST_CASE("ch16 reference cache: a file read from the cache counts as used now", "[ch16][cache]") {
+    const fs::path dir = strahl::test::scratch_dir("ch16_cache_touch");
+    const fixture x;
+    reference_cache(dir, x.s, x.exact, 1).closest("primary", x.rays);
+    const fs::path f = only_file(dir, "closest");
+    const auto old = fs::file_time_type::clock::now() - std::chrono::hours(24);
+    fs::last_write_time(f, old);
+    reference_cache again(dir, x.s, x.exact, 1);
+    again.closest("primary", x.rays);
+    CHECK(again.loaded() == 1);
+    CHECK(fs::last_write_time(f) > old + std::chrono::hours(23));
+    // So a prune right after this run keeps it.
+    CHECK(prune_reference_cache(dir, 0, old + std::chrono::hours(1)).files == 0);
+}

@@ -3,11 +3,13 @@
 #include "strahl/race/ray_io.hpp"
 #include "strahl/race/ray_sets.hpp"
 #include "strahl/scene.hpp"
+#include <algorithm>
 #include <bit>
 #include <cctype>
 #include <cstdio>
 #include <functional>
 #include <iostream>
+#include <regex>
 
 namespace strahl::race {
 
@@ -124,6 +126,9 @@ std::vector<Answer> reference_cache::answers(const std::string& set, const char*
     if (!f.empty()) {
         const cached c = load(f, rays, out, read, trace, agree);
         if (c == cached::usable) {
+            // Touched: the file was used now (prune_reference_cache removes the least recently used).
+            std::error_code ec;
+            std::filesystem::last_write_time(f, std::filesystem::file_time_type::clock::now(), ec);
             ++loaded_;
             return out;
         }
@@ -160,6 +165,37 @@ std::vector<std::uint8_t> reference_cache::any(const std::string& set, std::span
         set, "any", rays, read_flags, write_flags,
         [this](std::span<const ray> r, std::vector<std::uint8_t>& out) { trace_any(exact_, r, out, threads_); },
         std::equal_to<std::uint8_t>());
+}
+
+pruned_files prune_reference_cache(const std::filesystem::path& folder, std::uintmax_t max_bytes,
+                                   std::filesystem::file_time_type since) {
+    // The cache's own files: NAME_SET_QUERY_HASH.hits or .flags (file() above), perhaps with .tmp after it.
+    static const std::regex ours(R"(.+_(closest|any)_[0-9a-f]{16}\.(hits|flags)(\.tmp)?)");
+    struct entry {
+        std::filesystem::path path;
+        std::uintmax_t bytes;
+        std::filesystem::file_time_type time;
+    };
+    std::vector<entry> files;
+    std::uintmax_t total = 0;
+    std::error_code ec;
+    for (const auto& e : std::filesystem::directory_iterator(folder, ec)) {
+        if (!e.is_regular_file(ec) || !std::regex_match(e.path().filename().string(), ours)) continue;
+        const std::uintmax_t bytes = e.file_size(ec);
+        if (ec) continue;
+        files.push_back({e.path(), bytes, e.last_write_time(ec)});
+        total += bytes;
+    }
+    std::sort(files.begin(), files.end(), [](const entry& a, const entry& b) { return a.time < b.time; });
+    pruned_files removed;
+    for (const entry& f : files) {
+        if (total <= max_bytes || f.time >= since) break;
+        if (!std::filesystem::remove(f.path, ec)) continue;
+        total -= f.bytes;
+        removed.bytes += f.bytes;
+        ++removed.files;
+    }
+    return removed;
 }
 
 }  // namespace strahl::race

@@ -68,9 +68,7 @@ void print_table(std::ostream& out, const std::vector<race_row>& rows) {
 
 std::string to_csv(const std::vector<race_row>& rows) {
     std::ostringstream out;
-    out << "scene,triangles,structure,chapter,exact,rays,ray_count,build_ms,memory_bytes,sah_cost,"
-           "closest_mrays_s,closest_runs,closest_vs_embree,closest_box_per_ray,closest_prim_per_ray,closest_nodes_per_ray,"
-           "closest_differing,any_mrays_s,any_runs,any_vs_embree,any_box_per_ray,any_prim_per_ray,any_differing\n";
+    out << race_csv_header << '\n';
     auto o = [](const std::optional<double>& v) { return v ? fmt("%.6g", *v) : std::string(); };
     for (const race_row& r : rows) {
         out << r.scene << ',' << r.triangles << ',' << r.accel << ',' << r.chapter << ',' << (r.exact ? 1 : 0) << ','
@@ -85,11 +83,18 @@ std::string to_csv(const std::vector<race_row>& rows) {
     return out.str();
 }
 
-std::string to_markdown(const std::vector<race_row>& rows, const std::string& machine) {
+std::string to_markdown(const std::vector<race_row>& rows, const std::string& machine, int processes) {
     std::ostringstream out;
-    out << "# The race\n\nMachine: " << machine << ". Single rays; Mrays/s are medians (runs in the CSV); "
-        << "xEmbree is the speed ratio to embree-medium in the same run; diff counts rays whose result differs "
-        << "from brute force.\n\n"
+    out << "# The race\n\nMachine: " << machine << ". Single rays; ";
+    if (processes > 1)
+        out << "every figure is the median across " << processes << " fresh processes, each figure of which is a "
+            << "median of timed runs; xEmbree is the median of each process's speed ratio to embree-medium; diff "
+            << "counts rays whose result differs from brute force, in the worst process. spread.md gives each "
+            << "figure's spread.\n\n";
+    else
+        out << "Mrays/s are medians (runs in the CSV); xEmbree is the speed ratio to embree-medium in the same run; "
+            << "diff counts rays whose result differs from brute force.\n\n";
+    out
         << "| scene | structure | rays | build ms | KiB | SAH | closest Mrays/s | xEmbree | any-hit Mrays/s | xEmbree | "
            "box/ray | prim/ray | diff closest | diff any |\n"
         << "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";

@@ -53,4 +53,18 @@ private:
     int threads_ = 1, loaded_ = 0, traced_ = 0, stale_ = 0;
 };
 
+// What prune_reference_cache removed.
+struct pruned_files {
+    int files = 0;
+    std::uintmax_t bytes = 0;
+};
+
+// Keeps a cache folder within max_bytes. Every use of a file touches it, so the files least recently used
+// have the oldest modification times: those go first, oldest first, until the folder's answer files add up
+// to max_bytes or less. Files used or written since `since` (this run's) are never removed, even over the
+// limit, and neither is any file whose name is not one the cache writes (NAME_SET_QUERY_HASH.hits or
+// .flags, or such a name with .tmp after it).
+pruned_files prune_reference_cache(const std::filesystem::path& folder, std::uintmax_t max_bytes,
+                                   std::filesystem::file_time_type since);
+
 }  // namespace strahl::race

@@ -27,8 +27,14 @@ struct race_row {
 void add_embree_ratios(std::vector<race_row>& rows);
 
 void print_table(std::ostream& out, const std::vector<race_row>& rows);
+// race.csv's first line: its columns.
+inline constexpr const char* race_csv_header =
+    "scene,triangles,structure,chapter,exact,rays,ray_count,build_ms,memory_bytes,sah_cost,"
+    "closest_mrays_s,closest_runs,closest_vs_embree,closest_box_per_ray,closest_prim_per_ray,closest_nodes_per_ray,"
+    "closest_differing,any_mrays_s,any_runs,any_vs_embree,any_box_per_ray,any_prim_per_ray,any_differing";
 std::string to_csv(const std::vector<race_row>& rows);
-std::string to_markdown(const std::vector<race_row>& rows, const std::string& machine);
+// processes > 1: the rows are medians across that many processes (race --processes), and the text says so.
+std::string to_markdown(const std::vector<race_row>& rows, const std::string& machine, int processes = 1);
 
 // speed_vs_build.svg (closest-hit Mrays/s against build ms, per scene, primary rays) and staircase.svg
 // (primary-ray Mrays/s per structure in chapter order, one bar group per structure, a bar per scene).

@@ -1,0 +1,46 @@
+// The race over several fresh processes. One process is one sample of the machine: every figure of a process
+// can come out about a quarter slower than the next process's (the address layout ASLR picks at each start,
+// or whatever else the machine is doing; chapter 05's README, 32 alternating build races), and the median of
+// a process's repeats cannot smooth that away. `race --processes N` runs the race N times, each time as a
+// fresh process (every second one measuring the structures in reverse order, so that no row is always
+// measured first or last), and reports each figure's median across the processes, with its spread.
+#pragma once
+#include "strahl/race/report.hpp"
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace strahl::race {
+
+// Reads back a race.csv that to_csv wrote (the any-hit nodes per ray, not in the CSV, stay empty); throws
+// std::runtime_error naming the file and line on anything else.
+std::vector<race_row> read_race_csv(const std::filesystem::path& file);
+
+// The smallest, median and largest of one figure across processes.
+struct spread {
+    double min = 0.0, median = 0.0, max = 0.0;
+    int samples = 0;  // processes that measured it
+};
+
+// One row of the combined race: `row` holds, per figure, the median across processes (the ratios to Embree
+// are the medians of each process's own ratio, not ratios of medians: a process that is slow for both
+// structures leaves its ratio alone). Its differing counts are the largest of any process, its timed runs
+// the sum; memory, SAH cost and tests per ray are the first process's (the same in every process: the
+// builders are deterministic).
+struct combined_row {
+    race_row row;
+    spread build_ms, closest, any, closest_vs_embree, any_vs_embree;
+};
+
+// Combines the rows of several processes: one row per scene, ray set and structure, in the first process's
+// order (rows that later processes lack have fewer samples; rows only later processes have are appended).
+std::vector<combined_row> combine_processes(const std::vector<std::vector<race_row>>& processes);
+
+// The combined rows with each figure's spread: "median (min to max)" per cell, as Markdown.
+std::string spread_markdown(const std::vector<combined_row>& rows, int processes, const std::string& machine);
+
+// Runs this program (/proc/self/exe) with `args` (argv[1...]) as a child process whose standard output and
+// error go to `log`; waits for it and returns its exit status (128 + the signal's number if a signal ended it).
+int run_self(const std::vector<std::string>& args, const std::filesystem::path& log);
+
+}  // namespace strahl::race

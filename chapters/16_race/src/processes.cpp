@@ -1,0 +1,175 @@
+#include "strahl/race/processes.hpp"
+#include "strahl/program.hpp"
+#include "strahl/timer.hpp"
+#include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <fcntl.h>
+#include <map>
+#include <optional>
+#include <sstream>
+#include <spawn.h>
+#include <stdexcept>
+#include <sys/wait.h>
+
+extern char** environ;
+
+namespace strahl::race {
+
+namespace {
+
+std::optional<double> optional_number(const std::filesystem::path& file, const csv_row& row, std::size_t k) {
+    if (row.cells.at(k).empty()) return std::nullopt;
+    return csv_number(file, row, k);
+}
+
+// The closest or any-hit half of a CSV row: columns first (Mrays/s), first + 1 (runs), then the optional
+// figures at the given columns; an empty Mrays/s cell means the query was not run.
+query_result read_query(const std::filesystem::path& file, const csv_row& row, std::size_t rays_column,
+                        std::size_t first, std::size_t box, std::size_t prim, std::optional<std::size_t> nodes,
+                        std::size_t differing) {
+    query_result q;
+    if (row.cells.at(first).empty()) return q;
+    q.mrays = csv_number(file, row, first);
+    q.runs = int(csv_number(file, row, first + 1));
+    q.rays = std::size_t(csv_number(file, row, rays_column));
+    q.box_per_ray = optional_number(file, row, box);
+    q.prim_per_ray = optional_number(file, row, prim);
+    if (nodes) q.nodes_per_ray = optional_number(file, row, *nodes);
+    q.differing = std::size_t(csv_number(file, row, differing));
+    return q;
+}
+
+std::string key_of(const race_row& r) { return r.scene + "\n" + r.ray_set + "\n" + r.accel; }
+
+spread spread_of(std::vector<double> v) {
+    spread s;
+    if (v.empty()) return s;
+    s.samples = int(v.size());
+    s.median = median(v);
+    s.min = *std::min_element(v.begin(), v.end());
+    s.max = *std::max_element(v.begin(), v.end());
+    return s;
+}
+
+std::string cell(const spread& s, const char* f) {
+    if (s.samples == 0) return "-";
+    char buf[128];
+    if (s.samples == 1) std::snprintf(buf, sizeof buf, f, s.median);
+    else {
+        const std::string form = std::string(f) + " (" + f + " to " + f + ")";
+        std::snprintf(buf, sizeof buf, form.c_str(), s.median, s.min, s.max);
+    }
+    return buf;
+}
+
+}  // namespace
+
+std::vector<race_row> read_race_csv(const std::filesystem::path& file) {
+    std::vector<race_row> rows;
+    for (const csv_row& c : read_csv(file, race_csv_header, "a race.csv written by the race")) {
+        race_row r;
+        r.scene = c.cells[0];
+        r.triangles = std::size_t(csv_number(file, c, 1));
+        r.accel = c.cells[2];
+        r.chapter = c.cells[3];
+        r.exact = c.cells[4] == "1";
+        r.ray_set = c.cells[5];
+        r.build_ms = csv_number(file, c, 7);
+        r.memory_bytes = std::size_t(csv_number(file, c, 8));
+        r.sah = optional_number(file, c, 9);
+        r.closest = read_query(file, c, 6, 10, 13, 14, 15, 16);
+        r.closest_vs_embree = optional_number(file, c, 12);
+        r.any = read_query(file, c, 6, 17, 20, 21, std::nullopt, 22);
+        r.any_vs_embree = optional_number(file, c, 19);
+        rows.push_back(std::move(r));
+    }
+    return rows;
+}
+
+std::vector<combined_row> combine_processes(const std::vector<std::vector<race_row>>& processes) {
+    // Every process's rows under their key, in the order first seen.
+    std::vector<std::string> order;
+    std::map<std::string, std::vector<const race_row*>> samples;
+    for (const std::vector<race_row>& rows : processes)
+        for (const race_row& r : rows) {
+            auto& v = samples[key_of(r)];
+            if (v.empty()) order.push_back(key_of(r));
+            v.push_back(&r);
+        }
+    std::vector<combined_row> out;
+    for (const std::string& key : order) {
+        const std::vector<const race_row*>& v = samples[key];
+        combined_row c;
+        c.row = *v.front();
+        std::vector<double> build, closest, any, closest_ratio, any_ratio;
+        c.row.closest.runs = c.row.any.runs = 0;
+        for (const race_row* r : v) {
+            build.push_back(r->build_ms);
+            if (r->closest.runs) closest.push_back(r->closest.mrays);
+            if (r->any.runs) any.push_back(r->any.mrays);
+            if (r->closest_vs_embree) closest_ratio.push_back(*r->closest_vs_embree);
+            if (r->any_vs_embree) any_ratio.push_back(*r->any_vs_embree);
+            c.row.closest.runs += r->closest.runs;
+            c.row.any.runs += r->any.runs;
+            c.row.closest.differing = std::max(c.row.closest.differing, r->closest.differing);
+            c.row.any.differing = std::max(c.row.any.differing, r->any.differing);
+        }
+        c.build_ms = spread_of(build);
+        c.closest = spread_of(closest);
+        c.any = spread_of(any);
+        c.closest_vs_embree = spread_of(closest_ratio);
+        c.any_vs_embree = spread_of(any_ratio);
+        c.row.build_ms = c.build_ms.median;
+        c.row.closest.mrays = c.closest.median;
+        c.row.any.mrays = c.any.median;
+        c.row.closest_vs_embree = c.closest_vs_embree.samples ? std::optional(c.closest_vs_embree.median) : std::nullopt;
+        c.row.any_vs_embree = c.any_vs_embree.samples ? std::optional(c.any_vs_embree.median) : std::nullopt;
+        out.push_back(std::move(c));
+    }
+    return out;
+}
+
+std::string spread_markdown(const std::vector<combined_row>& rows, int processes, const std::string& machine) {
+    std::ostringstream out;
+    out << "# The race's spread across processes\n\nMachine: " << machine << ". " << processes
+        << " fresh processes, every second one measuring the structures in reverse order. Each cell: the median "
+           "across processes (the smallest and the largest in brackets) of the figure each process measured (itself "
+           "a median of timed runs). xEmbree: each process's own speed ratio to embree-medium. n: processes that "
+           "measured the row.\n\n"
+        << "| scene | structure | rays | n | build ms | closest Mrays/s | xEmbree | any-hit Mrays/s | xEmbree |\n"
+        << "|---|---|---|---:|---:|---:|---:|---:|---:|\n";
+    for (const combined_row& c : rows)
+        out << "| " << c.row.scene << " | " << c.row.accel << " | " << c.row.ray_set << " | " << c.build_ms.samples
+            << " | " << cell(c.build_ms, "%.2f") << " | " << cell(c.closest, "%.3f") << " | "
+            << cell(c.closest_vs_embree, "%.3g") << " | " << cell(c.any, "%.3f") << " | "
+            << cell(c.any_vs_embree, "%.3g") << " |\n";
+    return out.str();
+}
+
+int run_self(const std::vector<std::string>& args, const std::filesystem::path& log) {
+    std::vector<std::string> all = {"/proc/self/exe"};
+    all.insert(all.end(), args.begin(), args.end());
+    std::vector<char*> argv;
+    for (std::string& a : all) argv.push_back(a.data());
+    argv.push_back(nullptr);
+
+    // The child's standard output and error: the log file (created or truncated).
+    posix_spawn_file_actions_t files;
+    posix_spawn_file_actions_init(&files);
+    posix_spawn_file_actions_addopen(&files, 1, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    posix_spawn_file_actions_adddup2(&files, 1, 2);
+    pid_t pid = 0;
+    const int failed = posix_spawn(&pid, argv[0], &files, nullptr, argv.data(), environ);
+    posix_spawn_file_actions_destroy(&files);
+    if (failed) throw std::runtime_error(std::string("cannot start the race again: ") + std::strerror(failed));
+
+    int status = 0;
+    while (waitpid(pid, &status, 0) < 0)
+        if (errno != EINTR) throw std::runtime_error(std::string("waiting for the race: ") + std::strerror(errno));
+    if (WIFEXITED(status)) return WEXITSTATUS(status);
+    return 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
+}
+
+}  // namespace strahl::race

@@ -1,0 +1,110 @@
+// The race over several processes (processes.hpp): race.csv reads back as it was written, and the combined
+// rows take each figure's median across processes, the ratios to Embree as medians of each process's own
+// ratio, the worst differing count, and the sum of timed runs.
+#include "strahl/race/processes.hpp"
+#include "test_support.hpp"
+#include <catch2/catch.hpp>
+#include <fstream>
+
+using namespace strahl;
+using namespace strahl::race;
+using strahl::test::scratch_dir;
+
+namespace {
+
+race_row row(const std::string& accel, const std::string& rays, double build_ms, double closest, double any) {
+    race_row r;
+    r.scene = "teapot";
+    r.triangles = 4096;
+    r.accel = accel;
+    r.chapter = accel == "embree-medium" ? "embree" : "05";
+    r.exact = accel != "embree-medium";
+    r.ray_set = rays;
+    r.build_ms = build_ms;
+    r.memory_bytes = 1000;
+    if (r.exact) r.sah = 22.5;
+    r.closest = {closest, 5, 100, 0, 30.5, 2.25, 15.0};
+    r.any = {any, 4, 100, 0, 20.0, 1.5, std::nullopt};
+    return r;
+}
+
+}  // namespace
+
+TEST_CASE("ch16 processes: race.csv reads back as to_csv wrote it", "[ch16][processes]") {
+    std::vector<race_row> rows = {row("ch05-binned16-fast", "primary", 1.25, 20.5, 22.0),
+                                  row("embree-medium", "primary", 1.5, 16.0, 18.0)};
+    rows[0].closest.differing = 3;
+    rows.push_back(row("ch05-binned16-fast", "shadow", 1.0, 0.0, 6.0));
+    rows.back().closest = {};  // shadow rays: no closest-hit query
+    add_embree_ratios(rows);
+    const auto dir = scratch_dir("ch16_processes_csv");
+    std::ofstream(dir / "race.csv") << to_csv(rows);
+    const std::vector<race_row> back = read_race_csv(dir / "race.csv");
+    REQUIRE(back.size() == rows.size());
+    CHECK(to_csv(back) == to_csv(rows));
+    CHECK(back[0].closest.differing == 3);
+    CHECK(back[0].exact);
+    CHECK_FALSE(back[1].exact);
+    CHECK_FALSE(back[1].sah);
+    REQUIRE(back[0].closest_vs_embree);
+    CHECK(*back[0].closest_vs_embree == Approx(20.5 / 16.0).epsilon(1e-5));
+    CHECK(back[2].closest.runs == 0);
+    CHECK(back[2].any.mrays == 6.0);
+
+    // Anything else is refused, naming the file.
+    std::ofstream(dir / "other.csv") << "scene,structure\nteapot,x\n";
+    CHECK_THROWS_WITH(read_race_csv(dir / "other.csv"), Catch::Contains("other.csv"));
+    std::string text = to_csv(rows);
+    text.replace(text.find("1.250"), 5, "fast!");
+    std::ofstream(dir / "bad.csv") << text;
+    CHECK_THROWS_WITH(read_race_csv(dir / "bad.csv"), Catch::Contains("line 2"));
+}
+
+TEST_CASE("ch16 processes: figures combine as medians across processes", "[ch16][processes]") {
+    // Three processes; the second is slow for both structures (a whole-process outlier), the third measured
+    // one more row.
+    std::vector<std::vector<race_row>> p(3);
+    p[0] = {row("ch05-binned16-fast", "primary", 60.0, 1.5, 2.0), row("embree-medium", "primary", 80.0, 2.5, 3.0)};
+    p[1] = {row("embree-medium", "primary", 100.0, 2.0, 2.5), row("ch05-binned16-fast", "primary", 85.0, 1.0, 1.25)};
+    p[2] = {row("ch05-binned16-fast", "primary", 62.0, 1.6, 2.1), row("embree-medium", "primary", 78.0, 2.6, 3.2),
+            row("ch04-median", "primary", 50.0, 1.0, 1.0)};
+    p[2][0].closest.differing = 2;
+    for (auto& rows : p) add_embree_ratios(rows);
+    const std::vector<combined_row> c = combine_processes(p);
+    REQUIRE(c.size() == 3);
+    // The first process's order; the row only the third process has comes last, with one sample.
+    CHECK(c[0].row.accel == "ch05-binned16-fast");
+    CHECK(c[1].row.accel == "embree-medium");
+    CHECK(c[2].row.accel == "ch04-median");
+    CHECK(c[2].build_ms.samples == 1);
+    CHECK(c[2].row.build_ms == 50.0);
+
+    const combined_row& fast = c[0];
+    CHECK(fast.build_ms.samples == 3);
+    CHECK(fast.row.build_ms == 62.0);
+    CHECK(fast.build_ms.min == 60.0);
+    CHECK(fast.build_ms.max == 85.0);
+    CHECK(fast.row.closest.mrays == 1.5);
+    CHECK(fast.row.any.mrays == 2.0);
+    // Ratios: each process's own (0.6, 0.5, 0.615...), their median 0.6; not 1.5 / 2.5 of the medians' ratio
+    // by accident: the any-hit ratios (0.667, 0.5, 0.656) have median 0.656, while 2.0 / 3.0 = 0.667.
+    REQUIRE(fast.row.closest_vs_embree);
+    CHECK(*fast.row.closest_vs_embree == Approx(0.6));
+    REQUIRE(fast.row.any_vs_embree);
+    CHECK(*fast.row.any_vs_embree == Approx(2.1 / 3.2));
+    CHECK(fast.closest_vs_embree.min == Approx(0.5));
+    // The worst differing count, the sum of the timed runs.
+    CHECK(fast.row.closest.differing == 2);
+    CHECK(fast.row.closest.runs == 15);
+    CHECK(fast.row.any.runs == 12);
+    CHECK(c[2].row.closest_vs_embree);  // the third process raced Embree too
+    // Without Embree in the race: no ratio.
+    const std::vector<combined_row> alone = combine_processes({{row("ch04-median", "diffuse", 1.0, 1.0, 1.0)}});
+    REQUIRE(alone.size() == 1);
+    CHECK_FALSE(alone[0].row.closest_vs_embree);
+    CHECK(alone[0].closest_vs_embree.samples == 0);
+
+    const std::string md = spread_markdown(c, 3, "test machine");
+    CHECK_THAT(md, Catch::Contains("62.00 (60.00 to 85.00)"));
+    CHECK_THAT(md, Catch::Contains("| 50.00 |"));  // one sample: no brackets
+}
