@@ -1,9 +1,9 @@
-// The race over several fresh processes. One process is one sample of the machine: every figure of a process
-// can come out about a quarter slower than the next process's (the address layout ASLR picks at each start,
-// or whatever else the machine is doing; chapter 05's README, 32 alternating build races), and the median of
-// a process's repeats cannot smooth that away. `race --processes N` runs the race N times, each time as a
-// fresh process (every second one measuring the structures in reverse order, so that no row is always
-// measured first or last), and reports each figure's median across the processes, with its spread.
+// The race over several fresh processes. One process is one sample of the machine: on the course's VMs a
+// whole process can come out 20 to 30% slower than the next (its builds, Embree's included, and the course's
+// traversals; chapter 05's README), and the median of a process's repeats cannot smooth that away.
+// `race --processes N` runs the race N times, each time as a fresh process (every second one measuring the
+// structures in reverse order, so that no row is always measured first or last), and reports each figure's
+// median across the processes, with its spread.
 #pragma once
 #include "strahl/race/report.hpp"
 #include <filesystem>
