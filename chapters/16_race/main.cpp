@@ -65,17 +65,27 @@ image primary_image(const scene& s, std::span<const ray> rays, const std::vector
 
 // race --processes N: this program run N times as fresh processes, each into DIR/processes/K/ and sharing one
 // reference cache; their rows combined into DIR's tables and plots (processes.hpp).
-int race_processes(int n, int argc, const char* const* argv, const std::filesystem::path& out,
+// With `more`, the processes already in DIR/processes/1, 2, ... (each with its race.csv) count too, and the
+// new ones follow them.
+int race_processes(int n, bool more, int argc, const char* const* argv, const std::filesystem::path& out,
                    const std::filesystem::path& cache_dir) {
     std::vector<std::string> base;
     for (int i = 1; i < argc; ++i)
-        if (std::string(argv[i]) != "--reverse") base.push_back(argv[i]);
+        if (std::string(argv[i]) != "--reverse" && std::string(argv[i]) != "--more") base.push_back(argv[i]);
     const bool reverse = std::find(argv + 1, argv + argc, std::string("--reverse")) != argv + argc;
-    std::cout << "race: " << n << " processes, each writing into " << (out / "processes").string() << "/\n";
     std::vector<std::vector<race_row>> results;
+    int earlier = 0;
+    while (more && std::filesystem::exists(out / "processes" / std::to_string(earlier + 1) / "race.csv"))
+        results.push_back(read_race_csv(out / "processes" / std::to_string(++earlier) / "race.csv"));
+    if (more)
+        std::cout << "race: " << earlier << " earlier processes found in " << (out / "processes").string() << "/\n";
+    // Without --more, an earlier run's processes beyond this run's n must not be combined by a later --more.
+    for (int k = n + 1; !more && std::filesystem::exists(out / "processes" / std::to_string(k) / "race.log"); ++k)
+        std::filesystem::remove_all(out / "processes" / std::to_string(k));
+    std::cout << "race: " << n << " processes, each writing into " << (out / "processes").string() << "/\n";
     timer total;
     progress_bar progress("race", n, "processes");
-    for (int k = 1; k <= n; ++k) {
+    for (int k = earlier + 1; k <= earlier + n; ++k) {
         const std::filesystem::path folder = out / "processes" / std::to_string(k), log = folder / "race.log";
         prepare_output(log, false, false);
         std::vector<std::string> args = base;
@@ -93,6 +103,7 @@ int race_processes(int n, int argc, const char* const* argv, const std::filesyst
     }
     progress.finish();
 
+    n += earlier;
     const std::vector<combined_row> combined = combine_processes(results);
     std::vector<race_row> rows;
     for (const combined_row& c : combined) rows.push_back(c.row);
@@ -105,8 +116,10 @@ int race_processes(int n, int argc, const char* const* argv, const std::filesyst
     // The scene images: the first process's (every process draws the same).
     for (const auto& f : std::filesystem::directory_iterator(out / "processes" / "1"))
         if (f.path().extension() == ".png")
-            std::filesystem::copy_file(f.path(), out / f.path().filename(), std::filesystem::copy_options::overwrite_existing);
-    std::printf("\nmachine: %s; %d processes took %.1f s\n", machine.c_str(), n, total.seconds());
+            std::filesystem::copy_file(f.path(), out / f.path().filename(),
+                                       std::filesystem::copy_options::overwrite_existing);
+    std::printf("\nmachine: %s; %d processes took %.1f s (%d combined)\n", machine.c_str(), n - earlier,
+                total.seconds(), n);
     std::cout << "every figure above is the median across the processes; each figure's spread is in "
               << (out / "spread.md").string() << "\nwrote " << (out / "race.csv").string()
               << ", race.md, spread.md, speed_vs_build.svg, staircase.svg and scene images\n";
@@ -139,6 +152,7 @@ int run(int argc, const char* const* argv) {
         .option("processes", "N", "1", "run the race N times, each a fresh process (every second one measuring the "
                                        "structures in reverse order), and report each figure's median across them; "
                                        "writes DIR/spread.md and each process's files under DIR/processes/")
+        .flag("more", "add the --processes N (default 1) to those already in DIR/processes/ and combine them all")
         .flag("reverse", "measure the structures in reverse order")
         .flag("quick", "built-in scenes only, 96x72 rays, 3 repeats: what ./course run runs");
     if (!args.parse(argc, argv)) return 0;
@@ -161,7 +175,8 @@ int run(int argc, const char* const* argv) {
     if (!(cache_limit_mb >= 0.0)) throw usage_error("--cache-limit must be a number of megabytes >= 0");
     const int processes = args.get_int("processes");
     if (processes < 1 || processes > 1000) throw usage_error("--processes must be in 1..1000");
-    if (processes > 1) return race_processes(processes, argc, argv, out, cache_dir);
+    if (processes > 1 || args.has("more"))
+        return race_processes(processes, args.has("more"), argc, argv, out, cache_dir);
 
     std::vector<ray_kind> kinds;
     for (const std::string& k : split(args.get("rays"))) kinds.push_back(parse_ray_kind(k));
@@ -249,7 +264,8 @@ int run(int argc, const char* const* argv) {
     if (!args.has("no-cache")) {
         std::cout << "reference: " << cached_sets[0] << " answer sets from " << cache_dir.string()
                   << ", " << cached_sets[1] << " traced by brute force (" << cached_sets[2] << " stale files replaced)\n";
-        const pruned_files p = prune_reference_cache(cache_dir, std::uintmax_t(cache_limit_mb * 1e6), started);
+        const std::uintmax_t limit = std::uintmax_t(std::min(cache_limit_mb, 1e12) * 1e6);
+        const pruned_files p = prune_reference_cache(cache_dir, limit, started);
         if (p.files)
             std::printf("reference cache: removed %d files (%.1f MB) used least recently, to keep it under %g MB "
                         "(--cache-limit)\n", p.files, double(p.bytes) / 1e6, cache_limit_mb);

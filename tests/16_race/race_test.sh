@@ -66,5 +66,17 @@ second_order=$(cut -d, -f3,6 "$many/processes/2/race.csv" | tail -n +2)
 [[ $first_order == "$(cut -d, -f3,6 "$many/race.csv" | tail -n +2)" ]] || fail "combined rows not in the first process's order"
 [[ $first_order != "$second_order" ]] || fail "the second process did not reverse the structures"
 [[ $(sort <<<"$first_order") == $(sort <<<"$second_order") ]] || fail "the two processes measured different rows"
+# --more: one process more, after the two; the tables combine three. Then --processes 2 without --more
+# drops the third folder, so that a later --more cannot pick it up.
+runs "--more" 0 "$race" "${tiny[@]}" --out "$many" --more --cache "$out/reference_cache"
+[[ -s $many/processes/3/race.csv ]] || fail "--more: no third process"
+contains "$dir/out" "2 earlier processes found" "--more"
+contains "$many/spread.md" "3 fresh processes" "--more"
+[[ $(cut -d, -f3,6 "$many/processes/3/race.csv" | tail -n +2) == "$first_order" ]] || fail "the third process is reversed"
+runs "--processes 2 again" 0 "$race" "${tiny[@]}" --out "$many" --processes 2 --cache "$out/reference_cache"
+[[ ! -e $many/processes/3 ]] || fail "--processes 2 kept an earlier third process"
+# Processes of another race (other rays) do not combine.
+runs "--more, other rays" 1 "$race" "${tiny[@]}" --out "$many" --more --width 20 --cache "$out/reference_cache"
+contains "$dir/err" "did not run the same race" "--more, other rays"
 
 finish race

@@ -104,6 +104,14 @@ TEST_CASE("ch16 processes: figures combine as medians across processes", "[ch16]
     CHECK_FALSE(alone[0].row.closest_vs_embree);
     CHECK(alone[0].closest_vs_embree.samples == 0);
 
+    // Another race's process (other rays, or another scene under the same name) does not combine.
+    std::vector<std::vector<race_row>> other = {p[0], p[0]};
+    other[1][0].closest.rays = other[1][0].any.rays = 200;
+    CHECK_THROWS_WITH(combine_processes(other), Catch::Contains("did not run the same race"));
+    other[1][0].closest.rays = other[1][0].any.rays = 100;
+    other[1][0].triangles = 4095;
+    CHECK_THROWS_WITH(combine_processes(other), Catch::Contains("did not run the same race"));
+
     const std::string md = spread_markdown(c, 3, "test machine");
     CHECK_THAT(md, Catch::Contains("62.00 (60.00 to 85.00)"));
     CHECK_THAT(md, Catch::Contains("| 50.00 |"));  // one sample: no brackets

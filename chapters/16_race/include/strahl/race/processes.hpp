@@ -34,6 +34,7 @@ struct combined_row {
 
 // Combines the rows of several processes: one row per scene, ray set and structure, in the first process's
 // order (rows that later processes lack have fewer samples; rows only later processes have are appended).
+// Throws std::runtime_error when one row's triangle or ray count differs between processes (not one race).
 std::vector<combined_row> combine_processes(const std::vector<std::vector<race_row>>& processes);
 
 // The combined rows with each figure's spread: "median (min to max)" per cell, as Markdown.
