@@ -104,6 +104,7 @@ int race_processes(int n, bool more, int argc, const char* const* argv, const st
     progress.finish();
 
     n += earlier;
+    if (results.empty()) throw std::runtime_error("no processes to combine in " + (out / "processes").string());
     const std::vector<combined_row> combined = combine_processes(results);
     std::vector<race_row> rows;
     for (const combined_row& c : combined) rows.push_back(c.row);
@@ -112,6 +113,7 @@ int race_processes(int n, bool more, int argc, const char* const* argv, const st
     std::ofstream(out / "race.csv") << to_csv(rows);
     std::ofstream(out / "race.md") << to_markdown(rows, machine, n);
     std::ofstream(out / "spread.md") << spread_markdown(combined, n, machine);
+    write_svg(out / "spread.svg", to_svg(spread_plot(results), 2, 700, 400));
     write_plots(out, rows);
     // The scene images: the first process's (every process draws the same).
     for (const auto& f : std::filesystem::directory_iterator(out / "processes" / "1"))
@@ -122,7 +124,7 @@ int race_processes(int n, bool more, int argc, const char* const* argv, const st
                 total.seconds(), n);
     std::cout << "every figure above is the median across the processes; each figure's spread is in "
               << (out / "spread.md").string() << "\nwrote " << (out / "race.csv").string()
-              << ", race.md, spread.md, speed_vs_build.svg, staircase.svg and scene images\n";
+              << ", race.md, spread.md, spread.svg, speed_vs_build.svg, staircase.svg and scene images\n";
     const std::size_t wrong = wrong_rows(rows);
     if (wrong) {
         std::cout << wrong << " row(s) of course structures differ from brute force in some process: a bug.\n";
@@ -151,8 +153,9 @@ int run(int argc, const char* const* argv) {
         .flag("no-cache", "trace brute force's answers afresh, neither reading nor writing the cache")
         .option("processes", "N", "1", "run the race N times, each a fresh process (every second one measuring the "
                                        "structures in reverse order), and report each figure's median across them; "
-                                       "writes DIR/spread.md and each process's files under DIR/processes/")
-        .flag("more", "add the --processes N (default 1) to those already in DIR/processes/ and combine them all")
+                                       "writes DIR/spread.md, DIR/spread.svg and each process's files under DIR/processes/")
+        .flag("more", "add the --processes N (default 1; 0: none, only combine) to those already in "
+                      "DIR/processes/ and combine them all")
         .flag("reverse", "measure the structures in reverse order")
         .flag("quick", "built-in scenes only, 96x72 rays, 3 repeats: what ./course run runs");
     if (!args.parse(argc, argv)) return 0;
@@ -174,7 +177,8 @@ int run(int argc, const char* const* argv) {
     const double cache_limit_mb = args.get_double("cache-limit");
     if (!(cache_limit_mb >= 0.0)) throw usage_error("--cache-limit must be a number of megabytes >= 0");
     const int processes = args.get_int("processes");
-    if (processes < 1 || processes > 1000) throw usage_error("--processes must be in 1..1000");
+    if (processes < (args.has("more") ? 0 : 1) || processes > 1000)
+        throw usage_error("--processes must be in 1..1000 (0 with --more: combine the processes already there)");
     if (processes > 1 || args.has("more"))
         return race_processes(processes, args.has("more"), argc, argv, out, cache_dir);
 

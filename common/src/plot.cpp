@@ -93,6 +93,14 @@ void y_axis(std::ostringstream& out, const axis& ay, const frame_geometry& g, co
         << escape(label) << "</text>\n";
 }
 
+// The room right of the frame for the legend: 180 pixels, more where a label is longer than about 22
+// characters (at 7 pixels a character, after the 25 of the swatch).
+double legend_room(const std::vector<std::string>& labels) {
+    std::size_t longest = 0;
+    for (const std::string& l : labels) longest = std::max(longest, l.size());
+    return std::max(180.0, 35.0 + 7.0 * double(longest));
+}
+
 // The legend right of the frame: a colour swatch and a label per entry (palette indices).
 void legend(std::ostringstream& out, const std::vector<std::pair<std::string, int>>& entries,
             const frame_geometry& g) {
@@ -162,7 +170,10 @@ std::string to_svg(const plot& p, int width, int height) {
     ax.fit(xs);
     ay.fit(ys, p.y_from_zero);
     frame_geometry g;
-    g.right = width - 180.0;
+    std::vector<std::string> labels;
+    for (const plot_series& s : p.series)
+        if (s.in_legend) labels.push_back(s.label);
+    g.right = width - legend_room(labels);
     g.bottom = height - 50.0;
     std::ostringstream out;
     header(out, width, height, p.title);
@@ -249,7 +260,7 @@ std::string to_svg(const bar_chart& c, int width, int height) {
     for (const auto& row : c.values) all.insert(all.end(), row.begin(), row.end());
     ay.fit(all);
     frame_geometry g;
-    g.right = width - 180.0;
+    g.right = width - legend_room(c.series_labels);
     const double group = (g.right - g.left) / double(std::max<std::size_t>(1, c.categories.size()));
     // The category names, slanted: 20 degrees where the groups are wide enough that neighbouring names stay
     // 13 pixels apart, else 50; the picture grows downwards by what the longest name needs.

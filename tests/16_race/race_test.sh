@@ -54,7 +54,7 @@ many=$dir/many
 runs "--processes 0" 2 "$race" "${tiny[@]}" --out "$many" --processes 0
 contains "$dir/err" "--processes must be in" "--processes 0"
 runs "--processes 2" 0 "$race" "${tiny[@]}" --out "$many" --processes 2 --cache "$out/reference_cache"
-for f in race.csv race.md spread.md speed_vs_build.svg staircase.svg teapot.png processes/1/race.csv \
+for f in race.csv race.md spread.md spread.svg speed_vs_build.svg staircase.svg teapot.png processes/1/race.csv \
     processes/2/race.csv processes/1/race.log; do
     [[ -s $many/$f ]] || fail "--processes 2: $many/$f missing or empty"
 done
@@ -75,6 +75,9 @@ contains "$many/spread.md" "3 fresh processes" "--more"
 [[ $(cut -d, -f3,6 "$many/processes/3/race.csv" | tail -n +2) == "$first_order" ]] || fail "the third process is reversed"
 runs "--processes 2 again" 0 "$race" "${tiny[@]}" --out "$many" --processes 2 --cache "$out/reference_cache"
 [[ ! -e $many/processes/3 ]] || fail "--processes 2 kept an earlier third process"
+rm "$many/spread.svg"
+runs "--processes 0 --more" 0 "$race" "${tiny[@]}" --out "$many" --processes 0 --more
+[[ -s $many/spread.svg && ! -e $many/processes/3 ]] || fail "--processes 0 --more: should redraw, run nothing"
 # Processes of another race (other rays) do not combine.
 runs "--more, other rays" 1 "$race" "${tiny[@]}" --out "$many" --more --width 20 --cache "$out/reference_cache"
 contains "$dir/err" "did not run the same race" "--more, other rays"

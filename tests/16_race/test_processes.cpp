@@ -1,6 +1,6 @@
 // The race over several processes (processes.hpp): race.csv reads back as it was written, and the combined
 // rows take each figure's median across processes, the ratios to Embree as medians of each process's own
-// ratio, the worst differing count, and the sum of timed runs.
+// ratio, the worst differing count, and the sum of timed runs; spread.svg draws a line per structure.
 #include "strahl/race/processes.hpp"
 #include "test_support.hpp"
 #include <catch2/catch.hpp>
@@ -111,6 +111,16 @@ TEST_CASE("ch16 processes: figures combine as medians across processes", "[ch16]
     other[1][0].closest.rays = other[1][0].any.rays = 100;
     other[1][0].triangles = 4095;
     CHECK_THROWS_WITH(combine_processes(other), Catch::Contains("did not run the same race"));
+
+    // spread.svg: one panel (one scene and ray set), a line per structure, a point per process that ran it.
+    const std::vector<plot> panels = spread_plot(p);
+    REQUIRE(panels.size() == 1);
+    CHECK(panels[0].log_y);
+    REQUIRE(panels[0].series.size() == 3);
+    CHECK(panels[0].series[0].label == "ch05-binned16-fast");
+    CHECK(panels[0].series[0].x == std::vector<double>{1, 2, 3});
+    CHECK(panels[0].series[0].y == std::vector<double>{1.5, 1.0, 1.6});
+    CHECK(panels[0].series[2].x == std::vector<double>{3});
 
     const std::string md = spread_markdown(c, 3, "test machine");
     CHECK_THAT(md, Catch::Contains("62.00 (60.00 to 85.00)"));

@@ -155,6 +155,37 @@ std::string spread_markdown(const std::vector<combined_row>& rows, int processes
     return out.str();
 }
 
+std::vector<plot> spread_plot(const std::vector<std::vector<race_row>>& processes) {
+    std::vector<plot> panels;
+    std::map<std::string, std::size_t> panel_of;  // scene and ray set
+    for (std::size_t k = 0; k < processes.size(); ++k)
+        for (const race_row& r : processes[k]) {
+            const bool closest = r.closest.runs > 0;
+            if (!closest && r.any.runs == 0) continue;
+            const std::string key = r.scene + "\n" + r.ray_set;
+            if (!panel_of.count(key)) {
+                panel_of[key] = panels.size();
+                plot p;
+                p.title = r.scene + ", " + r.ray_set + " rays: speed per process";
+                p.x_label = "process";
+                p.y_label = std::string(closest ? "closest-hit" : "any-hit") + " speed [Mrays/s]";
+                p.log_y = true;
+                panels.push_back(std::move(p));
+            }
+            plot& p = panels[panel_of[key]];
+            auto s = std::find_if(p.series.begin(), p.series.end(),
+                                  [&](const plot_series& x) { return x.label == r.accel; });
+            if (s == p.series.end()) {
+                plot_series line;
+                line.label = r.accel;
+                s = p.series.insert(p.series.end(), std::move(line));
+            }
+            s->x.push_back(double(k + 1));
+            s->y.push_back(closest ? r.closest.mrays : r.any.mrays);
+        }
+    return panels;
+}
+
 int run_self(const std::vector<std::string>& args, const std::filesystem::path& log) {
     std::vector<std::string> all = {"/proc/self/exe"};
     all.insert(all.end(), args.begin(), args.end());

@@ -5,6 +5,7 @@
 // structures in reverse order, so that no row is always measured first or last), and reports each figure's
 // median across the processes, with its spread.
 #pragma once
+#include "strahl/plot.hpp"
 #include "strahl/race/report.hpp"
 #include <filesystem>
 #include <string>
@@ -39,6 +40,11 @@ std::vector<combined_row> combine_processes(const std::vector<std::vector<race_r
 
 // The combined rows with each figure's spread: "median (min to max)" per cell, as Markdown.
 std::string spread_markdown(const std::vector<combined_row>& rows, int processes, const std::string& machine);
+
+// spread.svg's panels: one per scene and ray set, the speed of every structure (closest hit; any hit where
+// the set has no closest-hit query) against the process that measured it, on a log axis, so that a process
+// that is slow as a whole shows as a dip in every line at once, and a ratio as a constant gap.
+std::vector<plot> spread_plot(const std::vector<std::vector<race_row>>& processes);
 
 // Runs this program (/proc/self/exe) with `args` (argv[1...]) as a child process whose standard output and
 // error go to `log`; waits for it and returns its exit status (128 + the signal's number if a signal ended it).
