@@ -67,27 +67,29 @@ image primary_image(const scene& s, std::span<const ray> rays, const std::vector
 // reference cache; their rows combined into DIR's tables and plots (processes.hpp).
 // With `more`, the processes already in DIR/processes/1, 2, ... (each with its race.csv) count too, and the
 // new ones follow them.
-int race_processes(int n, bool more, int argc, const char* const* argv, const std::filesystem::path& out,
-                   const std::filesystem::path& cache_dir) {
+int race_processes(int n, bool more, bool reverse, int argc, const char* const* argv,
+                   const std::filesystem::path& out, const std::filesystem::path& cache_dir) {
+    // Each child gets this command line without --more and --reverse, and its own --out.
     std::vector<std::string> base;
     for (int i = 1; i < argc; ++i)
         if (std::string(argv[i]) != "--reverse" && std::string(argv[i]) != "--more") base.push_back(argv[i]);
-    const bool reverse = std::find(argv + 1, argv + argc, std::string("--reverse")) != argv + argc;
+    const auto folder_of = [&](int k) { return out / "processes" / std::to_string(k); };
     std::vector<std::vector<race_row>> results;
     int earlier = 0;
-    while (more && std::filesystem::exists(out / "processes" / std::to_string(earlier + 1) / "race.csv"))
-        results.push_back(read_race_csv(out / "processes" / std::to_string(++earlier) / "race.csv"));
+    while (more && std::filesystem::exists(folder_of(earlier + 1) / "race.csv"))
+        results.push_back(read_race_csv(folder_of(++earlier) / "race.csv"));
     if (more)
         std::cout << "race: " << earlier << " earlier processes found in " << (out / "processes").string() << "/\n";
     // Without --more, an earlier run's processes beyond this run's n must not be combined by a later --more.
-    for (int k = n + 1; !more && std::filesystem::exists(out / "processes" / std::to_string(k) / "race.log"); ++k)
-        std::filesystem::remove_all(out / "processes" / std::to_string(k));
+    for (int k = n + 1; !more && std::filesystem::exists(folder_of(k) / "race.log"); ++k)
+        std::filesystem::remove_all(folder_of(k));
     std::cout << "race: " << n << " processes, each writing into " << (out / "processes").string() << "/\n";
     timer total;
     progress_bar progress("race", n, "processes");
     for (int k = earlier + 1; k <= earlier + n; ++k) {
-        const std::filesystem::path folder = out / "processes" / std::to_string(k), log = folder / "race.log";
+        const std::filesystem::path folder = folder_of(k), log = folder / "race.log";
         prepare_output(log, false, false);
+        std::filesystem::remove(folder / "race.csv");  // an earlier run's must not pass for this one's
         std::vector<std::string> args = base;
         for (const std::string& a : {std::string("--processes"), std::string("1"), std::string("--out"), folder.string(),
                                      std::string("--cache"), cache_dir.string()})
@@ -116,7 +118,7 @@ int race_processes(int n, bool more, int argc, const char* const* argv, const st
     write_svg(out / "spread.svg", to_svg(spread_plot(results), 2, 700, 400));
     write_plots(out, rows);
     // The scene images: the first process's (every process draws the same).
-    for (const auto& f : std::filesystem::directory_iterator(out / "processes" / "1"))
+    for (const auto& f : std::filesystem::directory_iterator(folder_of(1)))
         if (f.path().extension() == ".png")
             std::filesystem::copy_file(f.path(), out / f.path().filename(),
                                        std::filesystem::copy_options::overwrite_existing);
@@ -180,7 +182,7 @@ int run(int argc, const char* const* argv) {
     if (processes < (args.has("more") ? 0 : 1) || processes > 1000)
         throw usage_error("--processes must be in 1..1000 (0 with --more: combine the processes already there)");
     if (processes > 1 || args.has("more"))
-        return race_processes(processes, args.has("more"), argc, argv, out, cache_dir);
+        return race_processes(processes, args.has("more"), args.has("reverse"), argc, argv, out, cache_dir);
 
     std::vector<ray_kind> kinds;
     for (const std::string& k : split(args.get("rays"))) kinds.push_back(parse_ray_kind(k));

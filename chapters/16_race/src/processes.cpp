@@ -25,15 +25,16 @@ std::optional<double> optional_number(const std::filesystem::path& file, const c
 }
 
 // The closest or any-hit half of a CSV row: columns first (Mrays/s), first + 1 (runs), then the optional
-// figures at the given columns; an empty Mrays/s cell means the query was not run.
-query_result read_query(const std::filesystem::path& file, const csv_row& row, std::size_t rays_column,
-                        std::size_t first, std::size_t box, std::size_t prim, std::optional<std::size_t> nodes,
+// figures at the given columns, and the row's ray count (column 6); an empty Mrays/s cell means the query
+// was not run.
+query_result read_query(const std::filesystem::path& file, const csv_row& row, std::size_t first, std::size_t box,
+                        std::size_t prim, std::optional<std::size_t> nodes,
                         std::size_t differing) {
     query_result q;
     if (row.cells.at(first).empty()) return q;
     q.mrays = csv_number(file, row, first);
     q.runs = int(csv_number(file, row, first + 1));
-    q.rays = std::size_t(csv_number(file, row, rays_column));
+    q.rays = std::size_t(csv_number(file, row, 6));
     q.box_per_ray = optional_number(file, row, box);
     q.prim_per_ray = optional_number(file, row, prim);
     if (nodes) q.nodes_per_ray = optional_number(file, row, *nodes);
@@ -79,9 +80,9 @@ std::vector<race_row> read_race_csv(const std::filesystem::path& file) {
         r.build_ms = csv_number(file, c, 7);
         r.memory_bytes = std::size_t(csv_number(file, c, 8));
         r.sah = optional_number(file, c, 9);
-        r.closest = read_query(file, c, 6, 10, 13, 14, 15, 16);
+        r.closest = read_query(file, c, 10, 13, 14, 15, 16);
         r.closest_vs_embree = optional_number(file, c, 12);
-        r.any = read_query(file, c, 6, 17, 20, 21, std::nullopt, 22);
+        r.any = read_query(file, c, 17, 20, 21, std::nullopt, 22);
         r.any_vs_embree = optional_number(file, c, 19);
         rows.push_back(std::move(r));
     }
