@@ -1,6 +1,7 @@
 #include "strahl/program.hpp"
 #include "strahl/scene.hpp"
 #include "strahl/todo.hpp"
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -175,14 +176,36 @@ std::vector<int> parse_int_list(const std::string& text, const std::string& name
 }
 
 namespace {
-std::vector<std::string> split_fields(const std::string& line) {
-    std::vector<std::string> cells;
-    std::istringstream in(line);
-    for (std::string cell; std::getline(in, cell, ',');) cells.push_back(cell);
-    if (!line.empty() && line.back() == ',') cells.emplace_back();  // a trailing empty field counts
+// A CSV line's fields, as RFC 4180 quotes them: a field in double quotes may hold commas, and "" stands for
+// one quote inside it. Returns nothing for a quote left open or text after a closing quote.
+std::optional<std::vector<std::string>> split_fields(const std::string& line) {
+    std::vector<std::string> cells(1);
+    for (std::size_t i = 0; i < line.size(); ++i) {
+        const char c = line[i];
+        if (c == ',') {
+            cells.emplace_back();
+        } else if (c == '"' && cells.back().empty()) {  // a quoted field: up to the unpaired closing quote
+            for (++i;; ++i) {
+                if (i >= line.size()) return std::nullopt;
+                if (line[i] != '"') cells.back() += line[i];
+                else if (i + 1 < line.size() && line[i + 1] == '"') cells.back() += line[++i];
+                else break;
+            }
+            if (i + 1 < line.size() && line[i + 1] != ',') return std::nullopt;
+        } else {
+            cells.back() += c;
+        }
+    }
     return cells;
 }
 }  // namespace
+
+std::string csv_field(const std::string& text) {
+    if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
+    std::string quoted = "\"";
+    for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return quoted + '"';
+}
 
 std::vector<csv_row> read_csv(const std::filesystem::path& file, const std::string& header, const std::string& what) {
     std::ifstream f(file);
@@ -191,11 +214,17 @@ std::vector<csv_row> read_csv(const std::filesystem::path& file, const std::stri
     if (!std::getline(f, line) || line != header)
         throw std::runtime_error("'" + file.string() + "' is not " + what + " (its first line should be '" + header +
                                  "')");
-    const std::size_t fields = split_fields(header).size();
+    const std::size_t fields = split_fields(header).value().size();
     std::vector<csv_row> rows;
-    for (int number = 2; std::getline(f, line); ++number) {
+    for (int number = 2; std::getline(f, line); number += 1 + int(std::count(line.begin(), line.end(), '\n'))) {
         if (line.empty()) continue;
-        csv_row r{number, split_fields(line)};
+        std::optional<std::vector<std::string>> cells = split_fields(line);
+        // A quoted field may run over line breaks: the row goes on on the next line.
+        for (std::string more; !cells && std::getline(f, more);) cells = split_fields(line += "\n" + more);
+        if (!cells)
+            throw std::runtime_error(file.string() + ", line " + std::to_string(number) +
+                                     ": a quoted field is not closed, or text follows its closing quote");
+        csv_row r{number, std::move(*cells)};
         if (r.cells.size() != fields)
             throw std::runtime_error(file.string() + ", line " + std::to_string(number) + ": " +
                                      std::to_string(fields) + " fields expected, not " + std::to_string(r.cells.size()));

@@ -51,6 +51,15 @@ TEST_CASE("ch16 processes: race.csv reads back as to_csv wrote it", "[ch16][proc
     CHECK(back[2].closest.runs == 0);
     CHECK(back[2].any.mrays == 6.0);
 
+    // A scene named with a comma and a quote (a file stem may hold both) reads back whole.
+    rows[0].scene = rows[1].scene = "sponza, \"inside\"";
+    std::ofstream(dir / "named.csv") << to_csv(rows);
+    const std::vector<race_row> named = read_race_csv(dir / "named.csv");
+    REQUIRE(named.size() == rows.size());
+    CHECK(named[0].scene == rows[0].scene);
+    CHECK(named[0].triangles == rows[0].triangles);
+    CHECK(to_csv(named) == to_csv(rows));
+
     // Anything else is refused, naming the file.
     std::ofstream(dir / "other.csv") << "scene,structure\nteapot,x\n";
     CHECK_THROWS_WITH(read_race_csv(dir / "other.csv"), Catch::Contains("other.csv"));

@@ -393,6 +393,22 @@ TEST_CASE("read_csv and csv_number: a program's own table back, anything else re
     CHECK_THROWS_WITH(read_csv(file("trailing.csv", header + "\nbunny,1,2,\n"), header, "a test table"),
                       Contains("not 4"));
 
+    // Quoted fields (RFC 4180): commas, doubled quotes and line breaks inside them come back whole.
+    const std::vector<std::string> names = {"plain", "a,b", "say \"hi\"", "two\nlines", "", ",\""};
+    std::string quoted = header + "\n";
+    for (const std::string& n : names) quoted += csv_field(n) + ",1," + csv_field(n) + "\n";
+    CHECK(csv_field("plain") == "plain");
+    CHECK(csv_field("a,b") == "\"a,b\"");
+    CHECK(csv_field("say \"hi\"") == "\"say \"\"hi\"\"\"");
+    const std::vector<csv_row> q = read_csv(file("quoted.csv", quoted), header, "a test table");
+    REQUIRE(q.size() == names.size());
+    for (std::size_t i = 0; i < names.size(); ++i) CHECK(q[i].cells == std::vector<std::string>{names[i], "1", names[i]});
+    CHECK(q[4].line == 8);  // the row after the one that ran over lines 5 to 7
+    CHECK_THROWS_WITH(read_csv(file("open.csv", header + "\n\"bunny,1,2\n"), header, "a test table"),
+                      Contains("line 2") && Contains("not closed"));
+    CHECK_THROWS_WITH(read_csv(file("after.csv", header + "\n\"bunny\"x,1,2\n"), header, "a test table"),
+                      Contains("line 2") && Contains("follows its closing quote"));
+
     const auto bad = file("bad.csv", header + "\nx,nan,3\nx,-1,3\nx,1.5ms,3\nx,,3\nx,inf,1e400\n");
     const std::vector<csv_row> b = read_csv(bad, header, "a test table");
     REQUIRE(b.size() == 5);

@@ -1,5 +1,6 @@
 #include "strahl/race/report.hpp"
 #include "strahl/plot.hpp"
+#include "strahl/program.hpp"
 #include <algorithm>
 #include <cstdio>
 #include <map>
@@ -71,8 +72,8 @@ std::string to_csv(const std::vector<race_row>& rows) {
     out << race_csv_header << '\n';
     auto o = [](const std::optional<double>& v) { return v ? fmt("%.6g", *v) : std::string(); };
     for (const race_row& r : rows) {
-        out << r.scene << ',' << r.triangles << ',' << r.accel << ',' << r.chapter << ',' << (r.exact ? 1 : 0) << ','
-            << r.ray_set << ',' << std::max(r.closest.rays, r.any.rays) << ',' << fmt("%.3f", r.build_ms) << ',' << r.memory_bytes << ','
+        out << csv_field(r.scene) << ',' << r.triangles << ',' << csv_field(r.accel) << ',' << csv_field(r.chapter) << ','
+            << (r.exact ? 1 : 0) << ',' << csv_field(r.ray_set) << ',' << std::max(r.closest.rays, r.any.rays) << ',' << fmt("%.3f", r.build_ms) << ',' << r.memory_bytes << ','
             << o(r.sah) << ',' << (r.closest.runs ? fmt("%.6g", r.closest.mrays) : "") << ',' << r.closest.runs << ','
             << o(r.closest_vs_embree) << ',' << o(r.closest.box_per_ray) << ',' << o(r.closest.prim_per_ray) << ','
             << o(r.closest.nodes_per_ray) << ',' << (r.closest.runs ? std::to_string(r.closest.differing) : "") << ','

@@ -70,7 +70,8 @@ std::vector<int> parse_int_list(const std::string& text, const std::string& name
 
 // --replot: a CSV file a program wrote earlier, read back. Its first line must be `header` exactly (else the
 // error says it is not `what`, e.g. "a bins.csv written by ch05"); every other non-empty line must have as
-// many comma-separated fields. Throws std::runtime_error naming the file and line otherwise, or if no row.
+// many comma-separated fields (a field in double quotes may hold commas and line breaks; "" is a quote inside
+// it, as RFC 4180 writes them). Throws std::runtime_error naming the file and line otherwise, or if no row.
 struct csv_row {
     int line = 0;  // the line number in the file, for messages
     std::vector<std::string> cells;
@@ -78,6 +79,9 @@ struct csv_row {
 std::vector<csv_row> read_csv(const std::filesystem::path& file, const std::string& header, const std::string& what);
 // Field k of a row as a finite number >= 0; throws std::runtime_error naming the file and line otherwise.
 double csv_number(const std::filesystem::path& file, const csv_row& row, std::size_t k);
+// A text for one CSV field: as it is, or in double quotes (quotes doubled) where it holds a comma, a quote or
+// a line break, so that read_csv gives it back whole.
+std::string csv_field(const std::string& text);
 
 // One of the course's shared meshes (file, in ../shared/scenes beside the clone), loaded and named `name`
 // for the chapter programs; where it is absent (a clone of its own), prints "NAME: skipped, ..." and
