@@ -2,7 +2,7 @@
 # The race end to end, small: --help, a refused option, a tiny run writing its tables, plots and scene image
 # with 0 rays differing from brute force; a second run reading brute force's answers from the reference
 # cache and giving the same answers; a tampered cache file traced again and replaced; --no-cache neither
-# reading nor writing the cache; --processes 2 combining two fresh processes.
+# reading nor writing the cache; --processes 2 combining two fresh processes; a failing process.
 # Usage: race_test.sh PATH/TO/race SCRATCH_FOLDER
 set -euo pipefail
 
@@ -81,5 +81,13 @@ runs "--processes 0 --more" 0 "$race" "${tiny[@]}" --out "$many" --processes 0 -
 # Processes of another race (other rays) do not combine.
 runs "--more, other rays" 1 "$race" "${tiny[@]}" --out "$many" --more --width 20 --cache "$out/reference_cache"
 contains "$dir/err" "did not run the same race" "--more, other rays"
+
+# A process that fails (its scene image cannot be written: a folder holds its name) is named, and no
+# earlier run's table in its folder passes for its own: processes/1/race.csv is removed before it runs.
+rm -f "$many/processes/1/teapot.png" && mkdir "$many/processes/1/teapot.png"
+runs "--processes 2, failing" 1 "$race" "${tiny[@]}" --out "$many" --processes 2 --cache "$out/reference_cache"
+contains "$dir/err" "process 1 of the race failed" "--processes 2, failing"
+contains "$many/processes/1/race.log" "teapot.png" "--processes 2, failing: the child's log"
+[[ ! -e $many/processes/1/race.csv ]] || fail "--processes 2, failing: an earlier race.csv was left for the process"
 
 finish race
