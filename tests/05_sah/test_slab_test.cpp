@@ -89,30 +89,37 @@ tally check_against_exact(const std::vector<grazing_case>& cases, Entry&& entry)
     return n;
 }
 
-// The fast test with a given widening; nothing for a ray it refuses.
+// The fast test with a given widening, its planes' t fused (one rounding) or not (two); nothing for a ray it
+// refuses. Both forms are checked whatever the build compiles the traversal with (fused_plane_default).
+template <bool Fused>
 auto fast_test(double widen) {
     return [widen](const ch04::bvh_node& n, const ray& r, float lo, float hi) -> std::optional<float> {
         const std::optional<fast_slab> s = fast_slab::make(r, n.box(), widen);
         if (!s) return std::nullopt;
-        return s->entry(n, lo, hi);
+        return s->template entry<Fused>(n, lo, hi);
     };
 }
 
 }  // namespace
 
 TEST_CASE("ch05 slab tests: no box met exactly is missed, near and far from the origin", "[ch05]") {
-    int lost_without_widening = 0;
+    int lost_without_widening = 0, lost_fused_without_widening = 0;
     for (const float offset : {0.0f, 1.0f, 1e3f, 1e5f, 1e7f})
         for (const float size : {1e-3f, 1.0f, 1e3f}) {
             const auto cases = grazing_cases(offset, size, 17, 4000);
             INFO("box of size " << size << " at " << offset << " from the origin");
-            // The fast test: no box missed, none entered late (its entry orders and prunes the walk).
-            const tally fast = check_against_exact(cases, fast_test(fast_slab_widen));
+            // The fast test, in both forms: no box missed, none entered late (its entry orders and prunes the
+            // walk).
+            const tally fast = check_against_exact(cases, fast_test<false>(fast_slab_widen));
+            const tally fused = check_against_exact(cases, fast_test<true>(fast_slab_widen));
             // Most of the 4000 rays meet their box, except where the box is a few floats wide (its rays then
             // have zero direction components, which the fast test refuses).
             if (size >= offset * 0x1p-16f) CHECK(fast.tested > 1000);
             CHECK(fast.missed == 0);
             CHECK(fast.late == 0);
+            CHECK(fused.tested == fast.tested);
+            CHECK(fused.missed == 0);
+            CHECK(fused.late == 0);
             // The robust test widens the exit only: no box missed (its entry may round late, by far less
             // than the ray's slack, which the walk's pruning allows for).
             const tally robust = check_against_exact(cases, [](const ch04::bvh_node& n, const ray& r, float lo, float hi) {
@@ -120,12 +127,15 @@ TEST_CASE("ch05 slab tests: no box met exactly is missed, near and far from the 
             });
             CHECK(robust.tested >= fast.tested);
             CHECK(robust.missed == 0);
-            const tally bare = check_against_exact(cases, fast_test(0.0));
+            const tally bare = check_against_exact(cases, fast_test<false>(0.0));
             lost_without_widening += bare.missed + bare.late;
+            const tally bare_fused = check_against_exact(cases, fast_test<true>(0.0));
+            lost_fused_without_widening += bare_fused.missed + bare_fused.late;
         }
-    // The same form with no bound on its rounding misses boxes or enters them late: the widening is what the
+    // The same forms with no bound on their rounding miss boxes or enter them late: the widening is what the
     // checks above test.
     CHECK(lost_without_widening > 0);
+    CHECK(lost_fused_without_widening > 0);
 }
 
 TEST_CASE("ch05 slab tests: the fast test refuses rays whose products could overflow", "[ch05][adversarial]") {
