@@ -1,6 +1,6 @@
 #include "strahl/race/processes.hpp"
 #include "strahl/program.hpp"
-#include "strahl/timer.hpp"
+#include "strahl/timer.hpp"  // median
 #include <algorithm>
 #include <cerrno>
 #include <cstdio>

@@ -65,9 +65,9 @@ struct robust_slab : plane_choice {
 // bound; the tests show that boxes are then lost, in both forms.
 inline constexpr double fast_slab_widen = 0x1p-20;
 
-// Whether the build targets a processor with fused multiply-add (-march=native on x86-64 since 2013, or
-// -mfma). The fast test then computes a plane's t in one instruction: 6 to 10% more rays per second in the
-// race on this course's machine (chapter 05's README). Without it, std::fma would be a slow library call, so
+// Whether the build targets a processor with fused multiply-add (-march=native on most x86-64 processors
+// made since 2013, or -mfma). The fast test then computes a plane's t in one instruction: 6 to 8% more rays
+// per second on this course's machine (median ratios of alternating strahl-trace runs: chapter 05's README). Without it, std::fma would be a slow library call, so
 // the multiply and the subtract stay apart. (-ffp-contract=off keeps the compiler from fusing on its own;
 // std::fma is asked for by name.)
 #ifdef __FMA__
