@@ -36,7 +36,8 @@ std::string machine_name() {
     std::string line, model = "unknown CPU";
     while (std::getline(cpu, line))
         if (line.rfind("model name", 0) == 0) { model = line.substr(line.find(':') + 2); break; }
-    return model + ", " + std::to_string(std::thread::hardware_concurrency()) + " hardware threads";
+    return model + ", " + std::to_string(std::thread::hardware_concurrency()) + " hardware threads; " +
+           embree_configuration().summary();
 }
 
 // Default scenes: the built-in ones, and the course's shared meshes where they sit beside the clone.
@@ -192,6 +193,8 @@ int run(int argc, const char* const* argv) {
     else entries = registered_accels(reg);
     if (args.has("reverse")) std::reverse(entries.begin(), entries.end());
     if (!embree_available()) std::cout << "Embree 3 was not found at build time: the race runs without it.\n";
+    else std::cout << "machine: " << machine_name() << " (Embree's queries run with flush-to-zero and "
+                   << "denormals-are-zero set, as its documentation asks)\n";
     std::cout << "race: " << w << "x" << h << " rays per set, " << threads << " thread" << (threads > 1 ? "s" : "")
               << ", median of " << rules.repeats << " after a warm-up (" << rules.budget_s << " s budget per query)\n";
 

@@ -1,5 +1,30 @@
 #include "strahl/race/embree_accel.hpp"
 #include <stdexcept>
+#if defined(__SSE__)
+#include <xmmintrin.h>
+#endif
+
+namespace strahl::race {
+
+// MXCSR bit 15 is flush-to-zero (results that would be denormal become 0), bit 6 denormals-are-zero
+// (denormal inputs read as 0).
+#if defined(__SSE__)
+constexpr unsigned ftz_daz_bits = (1u << 15) | (1u << 6);
+denormals_flushed::denormals_flushed() : saved_(_mm_getcsr()) { _mm_setcsr(saved_ | ftz_daz_bits); }
+denormals_flushed::~denormals_flushed() { _mm_setcsr(saved_); }
+bool denormals_are_flushed() { return (_mm_getcsr() & ftz_daz_bits) == ftz_daz_bits; }
+#else
+denormals_flushed::denormals_flushed() {}
+denormals_flushed::~denormals_flushed() {}
+bool denormals_are_flushed() { return false; }
+#endif
+
+std::string embree_report::summary() const {
+    if (version.empty()) return "no Embree";
+    return "Embree " + version + ", " + (kernels.empty() ? std::string("unknown") : kernels) + " kernels";
+}
+
+}  // namespace strahl::race
 
 #ifndef STRAHL_HAVE_EMBREE
 
@@ -8,11 +33,18 @@ bool embree_available() { return false; }
 std::unique_ptr<accel> make_embree_accel(const embree_config&) {
     throw std::runtime_error("this build has no Embree 3 (install libembree-dev: ./course setup)");
 }
+const embree_report& embree_configuration() {
+    static const embree_report none;
+    return none;
+}
 }  // namespace strahl::race
 
 #else
 
+#include <cmath>
 #include <embree3/rtcore.h>
+#include <iostream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -20,10 +52,23 @@ namespace strahl::race {
 
 namespace {
 
+// The probe's filter function (embree_call_probe): runs inside Embree's traversal at every candidate hit.
+void probe_filter(const RTCFilterFunctionNArguments* args) {
+    auto* probe = static_cast<embree_call_probe*>(args->geometryUserPtr);
+    for (unsigned i = 0; i < args->N; ++i) {
+        if (args->valid[i] != -1) continue;
+        const float tnear = RTCRayN_tnear(args->ray, args->N, i);
+        probe->candidate_hits.fetch_add(1, std::memory_order_relaxed);
+        if (!denormals_are_flushed()) probe->without_ftz_daz.fetch_add(1, std::memory_order_relaxed);
+        if (std::fpclassify(tnear) == FP_SUBNORMAL) probe->denormal_tnear.fetch_add(1, std::memory_order_relaxed);
+    }
+}
+
 class embree_accel final : public accel {
 public:
     explicit embree_accel(const embree_config& c) : config_(c) {
         const std::string options = "threads=" + std::to_string(c.threads > 0 ? c.threads : 0);
+        const denormals_flushed flushed;  // (so that Embree's start-up check finds FTZ and DAZ set)
         device_ = rtcNewDevice(options.c_str());
         if (!device_) throw std::runtime_error("Embree: rtcNewDevice failed (error " + std::to_string(rtcGetDeviceError(nullptr)) + ")");
     }
@@ -61,6 +106,11 @@ public:
                                                                       3 * sizeof(unsigned), nt));
             for (std::size_t i = 0; i < nt; ++i)
                 for (int k = 0; k < 3; ++k) idx[3 * i + k] = s.mesh.indices[i][k];
+            if (config_.probe) {
+                rtcSetGeometryUserData(geom, config_.probe);
+                rtcSetGeometryIntersectFilterFunction(geom, probe_filter);
+                rtcSetGeometryOccludedFilterFunction(geom, probe_filter);
+            }
             rtcCommitGeometry(geom);
             rtcAttachGeometry(scene_, geom);
             rtcReleaseGeometry(geom);
@@ -72,6 +122,7 @@ public:
     }
 
     void intersect(std::span<const ray> rays, std::span<hit> hits) const override {
+        const denormals_flushed flushed;
         RTCIntersectContext context;
         rtcInitIntersectContext(&context);
         const int w = config_.packet_image_width;
@@ -87,10 +138,12 @@ public:
     }
 
     void occluded(std::span<const ray> rays, std::span<std::uint8_t> blocked) const override {
+        const denormals_flushed flushed;
         RTCIntersectContext context;
         rtcInitIntersectContext(&context);
         for (std::size_t i = 0; i < rays.size(); ++i) {
-            RTCRay r = to_embree(rays[i]).ray;
+            RTCRay r;
+            to_embree(rays[i], r);
             rtcOccluded1(scene_, &context, &r);
             blocked[i] = r.tfar == -inf ? 1 : 0;
         }
@@ -100,16 +153,24 @@ public:
     std::size_t memory_bytes() const override { return bytes_; }
 
 private:
-    // The course's rays are open intervals (tmin, tmax); Embree's are closed [tnear, tfar]. The ends are
-    // nudged inwards by one ulp so both accept the same t.
+    // The course's rays are open intervals (tmin, tmax). Embree's triangle test already excludes t = tnear
+    // (absDen * tnear < T) but accepts t = tfar (T <= absDen * tfar): tnear is tmin, and tfar is tmax moved
+    // inwards by one ulp. (tnear = nextafter(tmin) would be a denormal for tmin = 0: slow, and read as 0
+    // anyway with denormals-are-zero on.)
+    // Every field written once, nothing zeroed twice: this runs once per ray.
+    static void to_embree(const ray& r, RTCRay& e) {
+        e.org_x = r.org.x; e.org_y = r.org.y; e.org_z = r.org.z;
+        e.tnear = r.tmin;
+        e.dir_x = r.dir.x; e.dir_y = r.dir.y; e.dir_z = r.dir.z;
+        e.time = 0.0f;
+        e.tfar = r.tmax == inf ? inf : std::nextafter(r.tmax, -inf);
+        e.mask = 0xFFFFFFFFu;
+        e.id = 0;
+        e.flags = 0;
+    }
     static RTCRayHit to_embree(const ray& r) {
-        RTCRayHit rh{};
-        rh.ray.org_x = r.org.x; rh.ray.org_y = r.org.y; rh.ray.org_z = r.org.z;
-        rh.ray.dir_x = r.dir.x; rh.ray.dir_y = r.dir.y; rh.ray.dir_z = r.dir.z;
-        rh.ray.tnear = std::nextafter(r.tmin, inf);
-        rh.ray.tfar = r.tmax == inf ? inf : std::nextafter(r.tmax, -inf);
-        rh.ray.mask = 0xFFFFFFFFu;
-        rh.ray.flags = 0;
+        RTCRayHit rh;
+        to_embree(r, rh.ray);
         rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
         rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
         return rh;
@@ -155,6 +216,48 @@ private:
 }  // namespace
 
 bool embree_available() { return true; }
+
+const embree_report& embree_configuration() {
+    static const embree_report report = [] {
+        embree_report r;
+        // A device created with verbose=1 prints Embree's configuration on std::cout (the same stream object:
+        // libstdc++ is shared), read here through a string buffer.
+        std::ostringstream captured;
+        std::streambuf* const saved = std::cout.rdbuf(captured.rdbuf());
+        RTCDevice device;
+        {
+            const denormals_flushed flushed;
+            device = rtcNewDevice("verbose=1,threads=1");
+        }
+        std::cout.rdbuf(saved);
+        if (!device) return r;
+        const long v = long(rtcGetDeviceProperty(device, RTC_DEVICE_PROPERTY_VERSION));
+        r.version = std::to_string(v / 10000) + "." + std::to_string(v / 100 % 100) + "." + std::to_string(v % 100);
+        rtcReleaseDevice(device);
+        // "    Targets : SSE2 SSE4.2 AVX AVX2 AVX512  (supported)" then "    ... (compile time enabled)".
+        std::istringstream lines(captured.str());
+        for (std::string line; std::getline(lines, line);) {
+            const auto list = [&](const char* tag) {
+                const std::size_t end = line.find(tag);
+                if (end == std::string::npos) return false;
+                std::size_t begin = line.find("Targets :");
+                begin = begin == std::string::npos ? 0 : begin + 9;
+                std::istringstream words(line.substr(begin, end - begin));
+                std::string all, w;
+                while (words >> w) all += (all.empty() ? "" : " ") + w;
+                (std::string(tag) == "(supported)" ? r.supported : r.compiled) = all;
+                return true;
+            };
+            if (!list("(supported)")) list("(compile time enabled)");
+        }
+        // Embree runs the widest target both compiled in and supported by the CPU.
+        std::istringstream supported(r.supported);
+        for (std::string t; supported >> t;)
+            if ((" " + r.compiled + " ").find(" " + t + " ") != std::string::npos) r.kernels = t;
+        return r;
+    }();
+    return report;
+}
 
 std::unique_ptr<accel> make_embree_accel(const embree_config& config) { return std::make_unique<embree_accel>(config); }
 

@@ -2,11 +2,32 @@
 // the course's accel interface: the baseline every chapter is measured against, and an independent oracle.
 // Embree has its own triangle test, so its answers may differ from brute force on a handful of edge cases:
 // exact() is false and the race counts the differences instead of demanding none.
+//
+// Embree is called the way its documentation asks, so that the race's yardstick is Embree's real speed:
+// - "flush to zero" and "denormals are zero" are set in MXCSR around every batch of Embree's queries, and
+//   restored afterwards (the course's own arithmetic, which must equal brute force bit for bit, keeps the
+//   IEEE defaults);
+// - the ray's tnear is the course's tmin itself, never a denormal. The course's interval (tmin, tmax) is open;
+//   Embree's triangle test accepts a hit when absDen * tnear < T (Moeller-Trumbore in un-divided form), a
+//   strict comparison, so t = tmin is already excluded; the far end is closed in Embree (T <= absDen * tfar),
+//   so tfar is tmax moved inwards by one ulp.
 #pragma once
 #include "strahl/accel.hpp"
+#include <atomic>
+#include <cstdint>
 #include <memory>
+#include <string>
 
 namespace strahl::race {
+
+// What the wrapper saw of Embree's arithmetic state in the middle of its queries: Embree calls a filter
+// function for every candidate hit, and the probe's filter records MXCSR and the ray's tnear there. Tests
+// attach one to check the yardstick; the race never does (a filter function slows Embree down).
+struct embree_call_probe {
+    std::atomic<std::uint64_t> candidate_hits{0};   // filter calls
+    std::atomic<std::uint64_t> without_ftz_daz{0};  // ... with flush-to-zero or denormals-are-zero off
+    std::atomic<std::uint64_t> denormal_tnear{0};   // ... for a ray whose tnear is a denormal
+};
 
 struct embree_config {
     enum class quality { medium, high } build_quality = quality::medium;
@@ -14,6 +35,7 @@ struct embree_config {
     // order, as the race writes them); 0 traces one ray at a time with rtcIntersect1 / rtcOccluded1.
     int packet_image_width = 0;
     int threads = 1;  // Embree's own build threads
+    embree_call_probe* probe = nullptr;  // tests only: record MXCSR and tnear at every candidate hit
 };
 
 // Whether this build found Embree 3 (find_package(embree 3)).
@@ -21,5 +43,33 @@ bool embree_available();
 
 // Throws std::runtime_error where Embree is not available.
 std::unique_ptr<accel> make_embree_accel(const embree_config& config);
+
+// Embree's own account of itself, read once from the report a device prints when created with verbose=1:
+// its version, the instruction sets this CPU supports and those the library was compiled for, and so the
+// kernels it runs (the widest in both lists). Empty strings where Embree is not available.
+struct embree_report {
+    std::string version;    // "3.13.5"
+    std::string supported;  // "SSE2 SSE4.2 AVX AVX2 AVX512"
+    std::string compiled;   // "SSE2 SSE4.2 AVX AVX2 AVX512"
+    std::string kernels;    // "AVX512": the widest target in both
+    std::string summary() const;  // "Embree 3.13.5, AVX512 kernels", or "no Embree"
+};
+const embree_report& embree_configuration();
+
+// Sets flush-to-zero and denormals-are-zero in this thread's MXCSR for its lifetime, then restores it.
+// Embree wants both on (its documentation, and a warning in its verbose report); the course wants neither.
+class denormals_flushed {
+public:
+    denormals_flushed();
+    ~denormals_flushed();
+    denormals_flushed(const denormals_flushed&) = delete;
+    denormals_flushed& operator=(const denormals_flushed&) = delete;
+
+private:
+    unsigned saved_ = 0;
+};
+
+// This thread's flush-to-zero and denormals-are-zero bits: both set (true) or not.
+bool denormals_are_flushed();
 
 }  // namespace strahl::race
