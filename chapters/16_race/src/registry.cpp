@@ -7,6 +7,7 @@
 #include "strahl/ch04/accel.hpp"
 #include "strahl/ch05/accel.hpp"
 #include "strahl/ch06/accel.hpp"
+#include "strahl/ch13/accel.hpp"
 #include <optional>
 #include <stdexcept>
 
@@ -24,6 +25,20 @@ ch06::refine_params refined(ch06::start_tree start, ch06::refine_method method) 
     p.start = start;
     p.method = method;
     return p;
+}
+// Chapter 13: chapter 05's fast binned tree (or chapter 06's reinserted one) collapsed into a wide tree.
+accel_entry wide(std::string name, std::string description, int width, int block, ch13::collapse_method method,
+                 bool reinserted = false) {
+    ch13::wide_config c;
+    c.width = width, c.block = block, c.collapse.method = method;
+    const ch04::bvh_builder source = reinserted
+        ? ch04::bvh_builder([](std::span<const aabb> b, std::span<const vec3> centroids) {
+              return ch06::build_refined_bvh(b, centroids, refined(ch06::start_tree::binned16, ch06::refine_method::reinsertion));
+          })
+        : ch04::bvh_builder([](std::span<const aabb> b, std::span<const vec3> centroids) {
+              return ch05::build_sah_bvh_fast(b, centroids, sah(ch05::sah_method::binned, 16));
+          });
+    return {name, "13", std::move(description), [name, source, c] { return ch13::make_accel(name, source, c); }};
 }
 }  // namespace
 
@@ -62,6 +77,16 @@ std::vector<accel_entry> registered_accels(const registry_options& o) {
              return ch06::make_accel(false, refined(ch06::start_tree::binned16, ch06::refine_method::reinsertion),
                                      ch05::walk_kind::fast);
          }},
+        wide("ch13-bvh4", "chapter 05's binned SAH tree collapsed greedily into 4-wide nodes, leaves in blocks of 4 triangles",
+             4, 4, ch13::collapse_method::greedy),
+        wide("ch13-bvh8", "the same tree collapsed greedily into 8-wide nodes, blocks of 4", 8, 4, ch13::collapse_method::greedy),
+        wide("ch13-bvh8-optimal", "the same tree collapsed into 8-wide nodes by the SAH-optimal dynamic program, blocks of 4",
+             8, 4, ch13::collapse_method::optimal),
+        wide("ch13-bvh8-block8", "8-wide nodes (optimal collapse), leaves in blocks of 8 triangles", 8, 8,
+             ch13::collapse_method::optimal),
+        wide("ch13-bvh16", "16-wide nodes (optimal collapse), blocks of 4", 16, 4, ch13::collapse_method::optimal),
+        wide("ch13-bvh8-reinserted", "chapter 06's reinserted tree collapsed into 8-wide nodes (optimal), blocks of 4",
+             8, 4, ch13::collapse_method::optimal, true),
         // Later chapters register here, one line each.
     };
     if (embree_available()) {

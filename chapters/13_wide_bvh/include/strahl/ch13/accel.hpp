@@ -1,0 +1,32 @@
+// Chapter 13's wide BVHs behind the course's accel interface: a binary tree from chapter 05 (or 06), collapsed
+// into N-wide nodes with leaves in blocks of M triangles, walked by wide_traverse.hpp. The race registers them.
+#pragma once
+#include "strahl/accel.hpp"
+#include "strahl/ch04/accel.hpp"
+#include "strahl/ch13/wide_bvh.hpp"
+#include <memory>
+#include <string>
+
+namespace strahl::ch13 {
+
+struct wide_config {
+    int width = 8;        // N: children per node, 4, 8 or 16
+    int block = 4;        // M: triangles per leaf block, 4 or 8
+    collapse_config collapse;
+};
+
+// The widths this build runs with intrinsics (simd::native), for the programs' headers: "SSE2 4, AVX 8, ...".
+std::string simd_widths();
+
+// Extra access for the program and the tests: the collapse's figures.
+class wide_accel_base : public accel {
+public:
+    virtual const collapse_stats& stats() const = 0;
+    virtual const ch04::bvh& binary_tree() const = 0;  // the tree it collapsed
+};
+
+// name: the race's row name; builder: the binary tree (ch04::bvh_builder over boxes and centroids).
+// Throws std::invalid_argument for a width or block size the course does not build.
+std::unique_ptr<wide_accel_base> make_accel(std::string name, ch04::bvh_builder builder, const wide_config& config);
+
+}  // namespace strahl::ch13

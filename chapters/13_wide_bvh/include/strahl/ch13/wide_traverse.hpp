@@ -1,0 +1,170 @@
+// One ray through the wide BVH: at each node, the N children's boxes in one SIMD slab test; the children hit
+// are visited nearest first (the others go on a stack with their entry distance, and are dropped when popped
+// if a hit found since lies before them); at a leaf, its triangles M at a time (block_test.hpp).
+//   I. Wald, C. Benthin and S. Boulos, "Getting rid of packets", IEEE RT 2008 (single rays through wide nodes);
+//   A. Williams et al., "An efficient and robust ray-box intersection algorithm", JGT 2005, and T. Ize,
+//   "Robust BVH ray traversal", JCGT 2013 (the slab tests: chapter 05's slab_test.hpp, here on N lanes).
+#pragma once
+#include "strahl/ch04/traverse.hpp"
+#include "strahl/ch05/slab_test.hpp"
+#include "strahl/ch13/wide_bvh.hpp"
+#include "strahl/simd.hpp"
+#include <bit>
+#include <cstddef>
+
+namespace strahl::ch13 {
+
+// Where the near and the far plane of each axis sit in a node, chosen once per ray from the direction's
+// signs: byte offsets of the rows lo[a] or hi[a].
+template <int N>
+struct plane_rows {
+    std::size_t near_row[3], far_row[3];
+    explicit plane_rows(const vec3& dir) {
+        for (int a = 0; a < 3; ++a) {
+            const std::size_t lo = offsetof(wide_node<N>, lo) + a * N * sizeof(float);
+            const std::size_t hi = offsetof(wide_node<N>, hi) + a * N * sizeof(float);
+            near_row[a] = std::signbit(dir[a]) ? hi : lo;
+            far_row[a] = std::signbit(dir[a]) ? lo : hi;
+        }
+    }
+    static const float* row(const wide_node<N>& n, std::size_t offset) {
+        return reinterpret_cast<const float*>(reinterpret_cast<const char*>(&n) + offset);
+    }
+};
+
+// Chapter 05's fast slab test on N boxes: a plane's t = plane * (1 / d) - org * (1 / d), the origin's term
+// moved outward once per ray (ch05::fast_slab: its bound covers every box inside the tree's), fused where
+// the processor has FMA. entry() is exercise 13.2 (node_entry, below).
+template <int N, bool Fused = ch05::fused_plane_default>
+struct wide_fast_slab : plane_rows<N> {
+    using vf = simd::vfloat<N>;
+    vf inv[3], org_near[3], org_far[3];
+    explicit wide_fast_slab(const ray& r, const ch05::fast_slab& s) : plane_rows<N>(r.dir) {
+        for (int a = 0; a < 3; ++a) inv[a] = vf(s.inv_dir[a]), org_near[a] = vf(s.org_near[a]), org_far[a] = vf(s.org_far[a]);
+    }
+    // A plane's t: plane * inv_dir - org_term, in one fused multiply-add or a multiply and a subtract.
+    [[gnu::always_inline]] static vf plane_t(vf plane, vf inv_dir, vf org_term) {
+        if constexpr (Fused) return simd::fmsub(plane, inv_dir, org_term);
+        else return plane * inv_dir - org_term;
+    }
+    vf entry(const wide_node<N>& n, float t0, float t1, simd::vmask<N>& hit) const;
+};
+
+// Exercise 13.2, the slab test of one ray against the N boxes of node n in one go (traversal.cpp): the
+// entry distance of every child's box for t in [t0, t1]; hit marks the boxes the ray enters. Lane k computes
+// what ch05::fast_slab::entry computes for child k's box, bit for bit.
+template <int N, bool Fused>
+simd::vfloat<N> node_entry(const wide_node<N>& n, const wide_fast_slab<N, Fused>& s, float t0, float t1,
+                           simd::vmask<N>& hit);
+
+template <int N, bool Fused>
+[[gnu::always_inline]] inline simd::vfloat<N> wide_fast_slab<N, Fused>::entry(const wide_node<N>& n, float t0,
+                                                                             float t1, simd::vmask<N>& hit) const {
+    return node_entry(n, *this, t0, t1, hit);
+}
+
+// A child on the walk's stack, with the distance at which the ray enters its box.
+struct stack_entry {
+    std::uint32_t ref;
+    float t;
+};
+
+// Exercise 13.3, the ordered push (traversal.cpp): of a node's children, those whose bits are set in `bits`
+// (two or more) with entry distances t[k] and references child[k]. Pushes all but the nearest onto the
+// stack (stack[top++]), the farthest first, so that the nearer ones are popped first, and returns the
+// nearest child's reference, to be visited now. Equal distances: the lower child index counts as nearer.
+template <int N>
+std::uint32_t push_ordered(unsigned bits, const float* t, const std::uint32_t* child, stack_entry* stack, int& top);
+
+// The two exercises called on their own, out of line (for the tests; N = 4, 8, 16).
+template <int N, bool Fused>
+simd::vfloat<N> node_entry_out_of_line(const wide_node<N>& n, const wide_fast_slab<N, Fused>& s, float t0, float t1,
+                                       simd::vmask<N>& hit);
+template <int N>
+std::uint32_t push_ordered_out_of_line(unsigned bits, const float* t, const std::uint32_t* child, stack_entry* stack,
+                                       int& top);
+
+// Chapter 05's robust slab test on N boxes, for rays the fast one cannot take (a zero or tiny direction
+// component): t = (plane - org) * (1 / d), a NaN never wins a comparison, the exit widened by 1 + 2 gamma(3).
+template <int N>
+struct wide_robust_slab : plane_rows<N> {
+    using vf = simd::vfloat<N>;
+    vf org[3], inv[3];
+    explicit wide_robust_slab(const ray& r) : plane_rows<N>(r.dir) {
+        for (int a = 0; a < 3; ++a) org[a] = vf(r.org[a]), inv[a] = vf(1.0f / r.dir[a]);
+    }
+    [[gnu::always_inline]] vf entry(const wide_node<N>& n, float t0, float t1, simd::vmask<N>& hit) const {
+        vf lo(t0), hi(t1);
+        for (int a = 0; a < 3; ++a) {
+            const vf near = (vf::load(this->row(n, this->near_row[a])) - org[a]) * inv[a];
+            const vf far = (vf::load(this->row(n, this->far_row[a])) - org[a]) * inv[a];
+            lo = simd::max(near, lo);
+            hi = simd::min(far, hi);
+        }
+        const vf up(1.0f + 2.0f * ch04::gamma(3)), down(1.0f - 2.0f * ch04::gamma(3));
+        hi = hi * simd::select(hi > vf(0.0f), up, down);
+        hit = lo <= hi;
+        return lo;
+    }
+};
+
+// The walk: calls leaf(ref) for each leaf the ray reaches (nearest first), reading r.tmax (shrunk by hits)
+// to prune; stops when leaf returns true. Boxes are tested against [tmin - slack, tmax + slack]
+// (strahl/tree_query.hpp's ray_slack), as in chapters 04 and 05.
+// (g++ 12 thinks the stack may be read before it is written when N = 16; entries are popped only after
+// being pushed.)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+template <int N, int M, class Slab, class Stats, class Leaf>
+void wide_walk(const wide_bvh<N, M>& tree, const Slab& s, float slack, ray& r, Stats& stats, Leaf&& leaf) {
+    stack_entry stack[ch04::bvh_max_depth * (N - 1) + 2];
+    int top = 0;
+    std::uint32_t ref = tree.root_ref;
+    for (;;) {
+        if (!is_leaf(ref)) {
+            const wide_node<N>& n = tree.nodes[ref];
+            stats.node_visit();
+            stats.box_test(N);
+            simd::vmask<N> hit;
+            const simd::vfloat<N> t = s.entry(n, r.tmin - slack, r.tmax + slack, hit);
+            const unsigned bits = simd::movemask(hit);
+            if (bits != 0) {
+                if ((bits & (bits - 1)) == 0) {  // one child hit: go there
+                    ref = n.child[std::countr_zero(bits)];
+                    continue;
+                }
+                // Several: the nearest now, the others on the stack (exercise 13.3).
+                alignas(64) float ts[N];
+                t.store(ts);
+                ref = push_ordered<N>(bits, ts, n.child, stack, top);
+                continue;
+            }
+        } else if (leaf(ref)) {
+            return;
+        }
+        // Pop the next child whose entry still lies within the (shrunk) range.
+        for (;;) {
+            if (top == 0) return;
+            const stack_entry e = stack[--top];
+            if (e.t <= r.tmax + slack) {
+                ref = e.ref;
+                break;
+            }
+        }
+    }
+}
+
+#pragma GCC diagnostic pop
+
+// The walk with chapter 05's choice of slab test: the fast one where the ray allows it, else the robust one.
+template <int N, int M, class Stats, class Leaf>
+void wide_traverse(const wide_bvh<N, M>& tree, ray& r, Stats& stats, Leaf&& leaf) {
+    if (tree.nodes.empty() && !is_leaf(tree.root_ref)) return;
+    const float slack = ray_slack(r, tree.bounds);
+    if (const std::optional<ch05::fast_slab> s = ch05::fast_slab::make(r, tree.bounds))
+        wide_walk(tree, wide_fast_slab<N>(r, *s), slack, r, stats, leaf);
+    else
+        wide_walk(tree, wide_robust_slab<N>(r), slack, r, stats, leaf);
+}
+
+}  // namespace strahl::ch13

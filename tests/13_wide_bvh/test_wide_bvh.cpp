@@ -1,0 +1,150 @@
+// Chapter 13 beyond the exercises (0 points): the collapses' trees (every triangle once, full nodes, the
+// optimal collapse's SAH cost no higher than the greedy one's), and exactness against brute force for every
+// width, block size and collapse on scenes and rays made to break them.
+#include "strahl/ch05/sah.hpp"
+#include "strahl/ch13/accel.hpp"
+#include "strahl/procedural.hpp"
+#include "bvh_rays.hpp"
+#include "exactness.hpp"
+#include "test_support.hpp"
+#include <catch2/catch.hpp>
+#include <algorithm>
+#include <limits>
+
+using namespace strahl;
+using namespace strahl::ch13;
+
+using test::copies;
+using test::mesh_only;
+
+namespace {
+
+ch04::bvh binary(const triangle_mesh& m, int max_leaf = 8) {
+    std::vector<aabb> boxes(m.triangle_count());
+    std::vector<vec3> centroids(boxes.size());
+    for (std::size_t i = 0; i < boxes.size(); ++i) {
+        const auto t = m.triangle(i);
+        boxes[i] = aabb().grow(t[0]).grow(t[1]).grow(t[2]);
+        centroids[i] = boxes[i].centroid();
+    }
+    ch05::sah_build_params p;
+    p.max_leaf = max_leaf;
+    return ch05::build_sah_bvh_fast(boxes, centroids, p);
+}
+
+// Every triangle of the binary tree exactly once in the wide tree's leaves; nodes not needlessly empty.
+template <int N, int M>
+void check_tree(const ch04::bvh& t, const triangle_mesh& m, collapse_method method) {
+    collapse_config c;
+    c.method = method;
+    const wide_bvh<N, M> w = collapse<N, M>(t, m, c);
+    INFO("BVH" << N << " blocks of " << M << ", " << to_string(method));
+    std::vector<std::uint32_t> seen;
+    const auto leaf_ids = [&](std::uint32_t ref) {
+        std::vector<std::uint32_t> ids;
+        for (std::uint32_t b = 0; b < leaf_blocks(ref); ++b)
+            for (std::uint32_t id : w.blocks[leaf_first(ref) + b].id) ids.push_back(id);
+        ids.erase(std::unique(ids.begin(), ids.end()), ids.end());  // (padding repeats the last triangle)
+        seen.insert(seen.end(), ids.begin(), ids.end());
+    };
+    if (is_leaf(w.root_ref)) leaf_ids(w.root_ref);
+    for (const wide_node<N>& n : w.nodes) {
+        int used = 0;
+        bool any_inner = false;
+        for (int k = 0; k < N; ++k) {
+            if (!n.used(k)) continue;
+            ++used;
+            if (is_leaf(n.child[k])) {
+                leaf_ids(n.child[k]);
+            } else {
+                any_inner = true;
+                CHECK(n.child[k] < w.nodes.size());
+            }
+        }
+        CHECK(used >= 2);
+        if (method == collapse_method::greedy && used < N) CHECK_FALSE(any_inner);  // greedy fills every node it can
+    }
+    std::vector<std::uint32_t> want = t.prim_ids;
+    std::sort(want.begin(), want.end());
+    std::sort(seen.begin(), seen.end());
+    CHECK(seen == want);
+    CHECK(w.stats.triangles == want.size());
+}
+
+void check_exact(const scene& s, std::size_t n_rays) {
+    for (const collapse_method method : {collapse_method::greedy, collapse_method::optimal})
+        for (const auto& [width, block] : {std::pair{4, 4}, {8, 4}, {8, 8}, {16, 4}, {16, 8}}) {
+            wide_config c;
+            c.width = width, c.block = block, c.collapse.method = method;
+            const auto a = make_accel("test", [](std::span<const aabb> b, std::span<const vec3> c) {
+                return ch05::build_sah_bvh_fast(b, c);
+            }, c);
+            a->build(s);
+            INFO("BVH" << width << ", blocks of " << block << ", " << to_string(method) << " collapse, "
+                       << s.mesh.triangle_count() << " triangles");
+            CHECK(test::disagreements_with_brute_force(*a, s.mesh, test::nasty_rays(a->binary_tree(), n_rays, 17)) == 0);
+        }
+}
+
+}  // namespace
+
+TEST_CASE("ch13 collapse: every triangle once, full nodes, on the teapot and a soup", "[ch13]") {
+    for (const triangle_mesh& m : {teapot_scene(3).mesh, random_soup(2000, 5, 0.1f)}) {
+        const ch04::bvh t = binary(m);
+        check_tree<4, 4>(t, m, collapse_method::greedy);
+        check_tree<8, 4>(t, m, collapse_method::greedy);
+        check_tree<16, 8>(t, m, collapse_method::greedy);
+        check_tree<4, 4>(t, m, collapse_method::optimal);
+        check_tree<8, 4>(t, m, collapse_method::optimal);
+        check_tree<8, 8>(t, m, collapse_method::optimal);
+    }
+}
+
+TEST_CASE("ch13 collapse: the optimal collapse costs no more than the greedy one, and its cost is the tree's", "[ch13]") {
+    const triangle_mesh m = teapot_scene(3).mesh;
+    const ch04::bvh t = binary(m);
+    collapse_config greedy, optimal;
+    optimal.method = collapse_method::optimal;
+    const wide_bvh<8, 4> g = collapse<8, 4>(t, m, greedy), o = collapse<8, 4>(t, m, optimal);
+    CHECK(o.stats.sah <= g.stats.sah * (1 + 1e-9));
+    CHECK(o.stats.sah > 0.0);
+    // The same for 4 and 16 children, and with leaves of up to 16 triangles to gather.
+    const wide_bvh<4, 4> g4 = collapse<4, 4>(t, m, greedy), o4 = collapse<4, 4>(t, m, optimal);
+    CHECK(o4.stats.sah <= g4.stats.sah * (1 + 1e-9));
+    optimal.max_leaf = 16;
+    const wide_bvh<16, 8> g16 = collapse<16, 8>(t, m, greedy), o16 = collapse<16, 8>(t, m, optimal);
+    CHECK(o16.stats.sah <= g16.stats.sah * (1 + 1e-9));
+    WARN("teapot, BVH8 with blocks of 4: SAH cost " << g.stats.sah << " greedy, " << o.stats.sah << " optimal; "
+         << g.nodes.size() << " and " << o.nodes.size() << " nodes");
+}
+
+TEST_CASE("ch13 collapse: leaves too large for a leaf reference are refused", "[ch13]") {
+    const triangle_mesh m = copies(300, vec3(0, 0, 0), vec3(1, 0, 0), vec3(0, 1, 0));
+    ch04::bvh t = binary(m);
+    // One leaf of 300 triangles: more than 64 blocks of 4.
+    t.nodes = {t.nodes[0]};
+    t.nodes[0].offset = 0, t.nodes[0].count = 300;
+    CHECK_THROWS_AS((collapse<8, 4>(t, m, {})), std::length_error);
+    CHECK_NOTHROW(collapse<8, 8>(t, m, {}));  // 38 blocks of 8
+    CHECK_THROWS_WITH(make_accel("x", {}, wide_config{8, 16, {}}), Catch::Contains("blocks of 16"));
+}
+
+TEST_CASE("ch13 wide BVH: every width equals brute force on the teapot and a soup", "[ch13][adversarial]") {
+    check_exact(teapot_scene(3), 300);
+    check_exact(mesh_only(random_soup(1200, 3, 0.1f)), 300);
+}
+
+TEST_CASE("ch13 wide BVH: planar, one triangle, empty, identical and collinear triangles", "[ch13][adversarial]") {
+    triangle_mesh flat = random_soup(600, 5, 0.1f);
+    for (vec3& p : flat.positions) p.z = 0.5f;
+    check_exact(mesh_only(flat), 300);
+    check_exact(mesh_only(copies(1, vec3(0, 0, 0), vec3(1, 0, 0), vec3(0, 1, 0))), 200);
+    check_exact(mesh_only(triangle_mesh{}), 100);
+    check_exact(mesh_only(copies(500, vec3(0, 0, 0), vec3(1, 0, 0), vec3(0, 1, 0))), 100);  // every tie at once
+}
+
+TEST_CASE("ch13 wide BVH: equals brute force on a scene far from the origin", "[ch13][adversarial]") {
+    triangle_mesh far = teapot_scene(3).mesh;
+    for (vec3& p : far.positions) p += vec3(3e4f, -1e5f, 2e4f);
+    check_exact(mesh_only(far), 300);
+}
