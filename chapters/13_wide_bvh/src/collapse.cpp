@@ -201,6 +201,11 @@ wide_bvh<N, M> collapse(const ch04::bvh& tree, const triangle_mesh& mesh, const 
     timer clock;
     wide_bvh<N, M> out;
     out.bounds = tree.bounds;
+    if (!tree.bounds.is_empty()) {
+        out.centre = tree.bounds.centroid();
+        const vec3 e = tree.bounds.extent();
+        out.diagonal = (e.x + e.y + e.z);  // >= the diagonal's length
+    }
     out.loose = tree.loose;
     if (tree.nodes.empty()) return out;
     collapser<N, M> c(tree, mesh, out);

@@ -13,6 +13,8 @@ struct wide_config {
     int width = 8;        // N: children per node, 4, 8 or 16
     int block = 4;        // M: triangles per leaf block, 4 or 8
     collapse_config collapse;
+    bool any_hit_nearest = false;  // any hit: visit the nearest child first (as closest hit does), or the
+                                   // children in stored order (the default: no sorting)
 };
 
 // The widths this build runs with intrinsics (simd::native), for the programs' headers: "SSE2 4, AVX 8, ...".

@@ -9,17 +9,26 @@
 #include "strahl/ch13/block_test.hpp"
 #include "strahl/ch13/wide_traverse.hpp"
 #include "strahl/tree_query.hpp"
+#include <bit>
+#include <limits>
 #include <stdexcept>
 
 namespace strahl::ch13 {
 
 namespace {
 
+// std::nextafter(t, +inf) for a finite t, without the library call: the next float above t.
+[[gnu::always_inline]] inline float next_up(float t) {
+    if (t == 0.0f) return std::numeric_limits<float>::denorm_min();  // +0 and -0
+    const std::uint32_t bits = std::bit_cast<std::uint32_t>(t);
+    return std::bit_cast<float>(t > 0.0f ? bits + 1 : bits - 1);  // away from 0 above it, towards 0 below
+}
+
 template <int N, int M>
 class wide_accel final : public per_ray_accel<wide_accel<N, M>, wide_accel_base> {
 public:
-    wide_accel(std::string name, ch04::bvh_builder builder, const collapse_config& c)
-        : name_(std::move(name)), builder_(std::move(builder)), config_(c) {}
+    wide_accel(std::string name, ch04::bvh_builder builder, const wide_config& c)
+        : name_(std::move(name)), builder_(std::move(builder)), config_(c.collapse), any_nearest_(c.any_hit_nearest) {}
 
     std::string name() const override { return name_; }
     const collapse_stats& stats() const override { return tree_.stats; }
@@ -52,7 +61,7 @@ public:
             return best;
         }
         const ray_lanes<M> lanes(r);
-        wide_traverse(tree_, r, stats, [&](std::uint32_t ref) {
+        wide_traverse<visit_order::nearest>(tree_, r, stats, [&](std::uint32_t ref) {
             const triangle_block<M>* b = &tree_.blocks[leaf_first(ref)];
             for (std::uint32_t k = leaf_blocks(ref); k-- > 0; ++b) {
                 stats.prim_test(M);
@@ -62,8 +71,11 @@ public:
                 alignas(64) float ts[M], us[M], vs[M];
                 t.store(ts), u.store(us), v.store(vs);
                 for (; bits != 0; bits &= bits - 1) {
+                    // Chapter 01's record_closest, with std::nextafter (a library call) inlined.
                     const int i = std::countr_zero(bits);
-                    ch01::record_closest(b->id[i], ts[i], us[i], vs[i], r, best);
+                    if (!closer(ts[i], b->id[i], best)) continue;
+                    best = hit{ts[i], b->id[i], us[i], vs[i], invalid_id};
+                    r.tmax = next_up(ts[i]);
                 }
             }
             return false;
@@ -85,7 +97,7 @@ public:
         ray r = query;
         const ray_lanes<M> lanes(r);
         bool found = false;
-        wide_traverse(tree_, r, stats, [&](std::uint32_t ref) {
+        const auto leaf = [&](std::uint32_t ref) {
             const triangle_block<M>* b = &tree_.blocks[leaf_first(ref)];
             for (std::uint32_t k = leaf_blocks(ref); k-- > 0 && !found; ++b) {
                 stats.prim_test(M);
@@ -93,7 +105,9 @@ public:
                 found = simd::any(intersect_block(*b, lanes, r.tmin, r.tmax, t, u, v));
             }
             return found;
-        });
+        };
+        if (any_nearest_) wide_traverse<visit_order::nearest>(tree_, r, stats, leaf);
+        else wide_traverse<visit_order::stored>(tree_, r, stats, leaf);
         return found;
     }
 
@@ -101,6 +115,7 @@ private:
     std::string name_;
     ch04::bvh_builder builder_;
     collapse_config config_;
+    bool any_nearest_ = false;
     std::unique_ptr<ch01::triangle_set> set_;
     ch04::bvh binary_;
     wide_bvh<N, M> tree_;
@@ -111,11 +126,11 @@ private:
 std::unique_ptr<wide_accel_base> make_accel(std::string name, ch04::bvh_builder builder, const wide_config& c) {
     const int key = c.width * 100 + c.block;
     switch (key) {
-    case 404: return std::make_unique<wide_accel<4, 4>>(std::move(name), std::move(builder), c.collapse);
-    case 804: return std::make_unique<wide_accel<8, 4>>(std::move(name), std::move(builder), c.collapse);
-    case 808: return std::make_unique<wide_accel<8, 8>>(std::move(name), std::move(builder), c.collapse);
-    case 1604: return std::make_unique<wide_accel<16, 4>>(std::move(name), std::move(builder), c.collapse);
-    case 1608: return std::make_unique<wide_accel<16, 8>>(std::move(name), std::move(builder), c.collapse);
+    case 404: return std::make_unique<wide_accel<4, 4>>(std::move(name), std::move(builder), c);
+    case 804: return std::make_unique<wide_accel<8, 4>>(std::move(name), std::move(builder), c);
+    case 808: return std::make_unique<wide_accel<8, 8>>(std::move(name), std::move(builder), c);
+    case 1604: return std::make_unique<wide_accel<16, 4>>(std::move(name), std::move(builder), c);
+    case 1608: return std::make_unique<wide_accel<16, 8>>(std::move(name), std::move(builder), c);
     default:
         throw std::invalid_argument("wide BVH: nodes of " + std::to_string(c.width) + " and blocks of " +
                                     std::to_string(c.block) + " are not built (nodes of 4, 8 or 16; blocks of 4 or 8; "

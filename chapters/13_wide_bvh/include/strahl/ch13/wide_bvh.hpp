@@ -78,6 +78,8 @@ struct collapse_stats {
 template <int N, int M>
 struct wide_bvh {
     aabb bounds;
+    vec3 centre{0.0f};     // the bounds' centre and an upper bound on their diagonal's length, for the
+    float diagonal = 0.0f; // per-ray slack (wide_traverse.hpp)
     std::uint32_t root_ref = 0;
     std::vector<wide_node<N>> nodes;
     std::vector<triangle_block<M>> blocks;
