@@ -14,7 +14,7 @@ const char* to_string(collapse_method m) { return m == collapse_method::greedy ?
 
 namespace {
 
-constexpr double infinite_cost = std::numeric_limits<double>::infinity();
+constexpr float infinite_cost = std::numeric_limits<float>::infinity();
 
 template <int N, int M>
 class collapser {
@@ -29,7 +29,8 @@ public:
 
     // The triangles of binary subtree i, in leaf order, into blocks of M; its reference.
     std::uint32_t make_leaf(std::uint32_t i) {
-        std::vector<std::uint32_t> ids;
+        std::vector<std::uint32_t>& ids = scratch_;  // (reused: no allocation per leaf)
+        ids.clear();
         gather(i, ids);
         const std::size_t blocks = (ids.size() + M - 1) / M;
         if (blocks > max_leaf_blocks)
@@ -102,7 +103,7 @@ public:
 
     // Optimal (Ylitie et al. 2017, with M-wide blocks): cost[i][j] is the cheapest SAH cost of binary subtree
     // i represented as at most j subtrees side by side (j = 1: one leaf or one wide node).
-    void optimal_costs(int max_leaf, double c_node, double c_block) {
+    void optimal_costs(int max_leaf, float c_node, float c_block) {
         const std::size_t n = t_.nodes.size();
         cost_.assign(n, {});
         split_.assign(n, {});
@@ -110,10 +111,10 @@ public:
         leaf_choice_.assign(n, false);
         for (std::size_t ii = n; ii-- > 0;) {
             const std::uint32_t i = std::uint32_t(ii);
-            const double a = area(i);
+            const float a = area(i);
             if (leaf(i)) {
                 tris_[i] = t_.nodes[i].count;
-                const double c = a * c_block * double((tris_[i] + M - 1) / M);
+                const float c = a * c_block * float((tris_[i] + M - 1) / M);
                 for (int j = 1; j <= N; ++j) cost_[i][j] = c, split_[i][j] = j == 1 ? 0 : -1;  // one slot is all it uses
                 leaf_choice_[i] = true;
                 continue;
@@ -121,25 +122,25 @@ public:
             const std::uint32_t l = left(i), r = right(i);
             tris_[i] = tris_[l] + tris_[r];
             // Distributing j slots over the two children.
-            double dist[N + 1];
+            float dist[N + 1];
             int best_k[N + 1];
             for (int j = 2; j <= N; ++j) {
                 dist[j] = infinite_cost, best_k[j] = 1;
                 for (int k = 1; k < j; ++k) {
-                    const double c = cost_[l][k] + cost_[r][j - k];
+                    const float c = cost_[l][k] + cost_[r][j - k];
                     if (c < dist[j]) dist[j] = c, best_k[j] = k;
                 }
             }
-            const double as_node = a * c_node + dist[N];
-            const double as_leaf = tris_[i] <= std::size_t(max_leaf) ? a * c_block * double((tris_[i] + M - 1) / M)
-                                                                       : infinite_cost;
+            const float as_node = a * c_node + dist[N];
+            const float as_leaf = tris_[i] <= std::size_t(max_leaf) ? a * c_block * float((tris_[i] + M - 1) / M)
+                                                                      : infinite_cost;
             leaf_choice_[i] = as_leaf <= as_node;
             cost_[i][1] = std::min(as_leaf, as_node);
             split_[i][1] = 0;
             for (int j = 2; j <= N; ++j) {
                 // Either fewer slots suffice, or the two children share j.
                 if (cost_[i][j - 1] <= dist[j]) cost_[i][j] = cost_[i][j - 1], split_[i][j] = -1;
-                else cost_[i][j] = dist[j], split_[i][j] = best_k[j];
+                else cost_[i][j] = dist[j], split_[i][j] = std::int8_t(best_k[j]);
             }
         }
     }
@@ -167,10 +168,10 @@ public:
 
 private:
     int best_root_split(std::uint32_t i) const {
-        double best = infinite_cost;
+        float best = infinite_cost;
         int best_k = 1;
         for (int k = 1; k < N; ++k) {
-            const double c = cost_[left(i)][k] + cost_[right(i)][N - k];
+            const float c = cost_[left(i)][k] + cost_[right(i)][N - k];
             if (c < best) best = c, best_k = k;
         }
         return best_k;
@@ -188,8 +189,9 @@ private:
     const ch04::bvh& t_;
     const triangle_mesh& mesh_;
     wide_bvh<N, M>& out_;
-    std::vector<std::array<double, N + 1>> cost_;
-    std::vector<std::array<int, N + 1>> split_;
+    std::vector<std::array<float, N + 1>> cost_;        // (float: half the memory of double, which Sponza's
+    std::vector<std::array<std::int8_t, N + 1>> split_; // 500,000 binary nodes make worth it at N = 16)
+    std::vector<std::uint32_t> scratch_;
     std::vector<std::size_t> tris_;
     std::vector<bool> leaf_choice_;
 };
@@ -210,10 +212,15 @@ wide_bvh<N, M> collapse(const ch04::bvh& tree, const triangle_mesh& mesh, const 
     if (tree.nodes.empty()) return out;
     collapser<N, M> c(tree, mesh, out);
     out.nodes.reserve(tree.nodes.size() / std::max(1, N - 1) + 1);
+    // At most one block per binary leaf more than the triangles fill: no reallocation while collapsing.
+    std::size_t binary_leaves = 0;
+    for (const ch04::bvh_node& n : tree.nodes) binary_leaves += n.is_leaf();
+    out.blocks.reserve(tree.prim_ids.size() / M + binary_leaves);
     if (config.method == collapse_method::greedy) {
         out.root_ref = c.greedy(0);
     } else {
-        c.optimal_costs(std::clamp(config.max_leaf, 1, int(max_leaf_blocks) * M), config.c_node, config.c_block);
+        c.optimal_costs(std::clamp(config.max_leaf, 1, int(max_leaf_blocks) * M), float(config.c_node),
+                        float(config.c_block));
         out.root_ref = c.optimal(0);
     }
     out.stats.ms = clock.milliseconds();
