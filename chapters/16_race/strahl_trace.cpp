@@ -50,6 +50,17 @@ int run(int argc, const char* const* argv) {
     }
     if (!args.has("scene")) throw usage_error("--scene is required");
     if (args.has("rays") == args.has("gen")) throw usage_error("give exactly one of --rays FILE and --gen KIND");
+    // Two files named alike would be written over each other (or the rays read over): refused, even with --force.
+    const auto same = [](const std::string& a, const std::string& b) {
+        std::error_code ec;
+        const std::filesystem::path pa = std::filesystem::weakly_canonical(a, ec), pb = std::filesystem::weakly_canonical(b, ec);
+        return a == b || (!pa.empty() && pa == pb);
+    };
+    if (args.has("out") && args.has("rays-out") && same(args.get("out"), args.get("rays-out")))
+        throw usage_error("--out and --rays-out name the same file, " + args.get("out") + ": give two files");
+    for (const char* o : {"out", "rays-out"})
+        if (args.has(o) && args.has("rays") && same(args.get(o), args.get("rays")))
+            throw usage_error(std::string("--") + o + " names the rays file it would read, " + args.get("rays"));
     for (const char* o : {"out", "rays-out"})
         if (args.has(o)) prepare_output(args.get(o), true, args.has("force"));
     const accel_entry entry = find_accel(args.get("accel"), reg);

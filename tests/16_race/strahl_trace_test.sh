@@ -85,5 +85,13 @@ refuses "a bad number for --width" 2 "--width expects an integer, got '3x'" \
     --scene builtin:teapot --gen primary --width 3x
 refuses "an unknown ray set" 1 "unknown ray set 'sideways'" --scene builtin:teapot --gen sideways --width 8 --height 8
 refuses "neither --rays nor --gen" 2 "exactly one of --rays FILE and --gen KIND" --scene builtin:teapot
+# One file for two outputs, or an output onto the rays it reads: refused even with --force, nothing written.
+cp "$dir/R" "$dir/R.before"
+refuses "--rays-out and --out alike" 2 "name the same file" --scene builtin:teapot --gen primary --width 8 \
+    --height 8 --rays-out "$dir/same" --out "$dir/same" --force
+[[ ! -e $dir/same ]] || fail "--rays-out and --out alike: a file was written"
+refuses "--out onto the rays read" 2 "names the rays file it would read" --scene builtin:teapot --rays "$dir/R" \
+    --out "$dir/./R" --force
+cmp "$dir/R" "$dir/R.before" || fail "--out onto the rays read: the rays file changed"
 
 finish strahl-trace

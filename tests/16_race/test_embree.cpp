@@ -253,3 +253,51 @@ TEST_CASE("ch16 embree: its own report names the version and the kernels it runs
     CHECK(r.summary().find(r.kernels) != std::string::npos);
     WARN("Embree's report: " << r.summary() << " (CPU supports " << r.supported << "; compiled for " << r.compiled << ")");
 }
+
+// Embree's traversal asserts tnear >= 0 and components within 1.844e18, and aborts the process otherwise:
+// the wrapper must answer those rays itself (with brute force), and pass Embree only the others.
+TEST_CASE("ch16 embree: rays Embree cannot take (negative tmin, huge components) get brute force's answer, "
+          "no abort", "[ch16][embree]") {
+    if (!embree_available()) {
+        WARN("skipped: this build has no Embree 3");
+        return;
+    }
+    const scene s = builtin_scene("teapot");
+    std::vector<ray> rays = primary_rays(s, 16, 12);
+    const std::size_t n = rays.size();
+    for (std::size_t i = 0; i < n; ++i) {
+        ray r = rays[i];
+        r.tmin = -1e-3f;
+        rays.push_back(r);  // a negative tmin
+        r = rays[i];
+        r.tmin = -5.0f;     // far behind the camera: hits behind the origin count too
+        rays.push_back(r);
+        r = rays[i];
+        r.dir *= 1e19f;     // a huge direction: the same line, t scaled down
+        rays.push_back(r);
+        r = rays[i];
+        r.org.x += 1e19f;   // a huge origin
+        rays.push_back(r);
+    }
+    brute_force exact;
+    exact.build(s);
+    std::vector<hit> want(rays.size());
+    std::vector<std::uint8_t> want_any(rays.size());
+    exact.intersect(rays, want);
+    exact.occluded(rays, want_any);
+    std::size_t found = 0;
+    for (std::size_t i = n; i < rays.size(); ++i) found += want[i].found();
+    CHECK(found > 0);
+    for (const char* name : {"embree-medium", "embree-high"}) {
+        const std::unique_ptr<accel> a = make_built(name, s);
+        std::vector<hit> got(rays.size());
+        std::vector<std::uint8_t> blocked(rays.size(), 7);
+        a->intersect(rays, got);
+        a->occluded(rays, blocked);
+        std::size_t differ = 0;
+        for (std::size_t i = n; i < rays.size(); ++i)
+            differ += !agrees(got[i], want[i], true) || blocked[i] != want_any[i];
+        INFO(name);
+        CHECK(differ == 0);
+    }
+}

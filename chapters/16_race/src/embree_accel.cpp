@@ -41,9 +41,12 @@ const embree_report& embree_configuration() {
 
 #else
 
+#include "strahl/race/brute_force.hpp"
 #include <cmath>
 #include <embree3/rtcore.h>
+#include <algorithm>
 #include <iostream>
+#include <mutex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -51,6 +54,15 @@ const embree_report& embree_configuration() {
 namespace strahl::race {
 
 namespace {
+
+// Whether Embree accepts the ray: its traversal asserts tnear >= 0 and origin and direction components within
+// FLT_LARGE (1.844e18), and aborts the process otherwise (Debian's build keeps the assertions). The wrapper
+// answers the other rays with brute force (the course's own answer), never passing them to Embree.
+bool embree_takes(const ray& r) {
+    constexpr float large = 1.844e18f;
+    const auto ok = [&](const vec3& v) { return std::fabs(v.x) <= large && std::fabs(v.y) <= large && std::fabs(v.z) <= large; };
+    return r.tmin >= 0.0f && !std::isnan(r.tmax) && ok(r.org) && ok(r.dir);
+}
 
 // The probe's filter function (embree_call_probe): runs inside Embree's traversal at every candidate hit.
 void probe_filter(const RTCFilterFunctionNArguments* args) {
@@ -87,12 +99,17 @@ public:
     }
 
     void build(const scene& s) override {
+        {
+            const std::lock_guard<std::mutex> lock(fallback_mutex_);
+            fallback_.reset();
+        }
         if (scene_) rtcReleaseScene(scene_);
         scene_ = rtcNewScene(device_);
         rtcSetSceneBuildQuality(scene_, config_.build_quality == embree_config::quality::high ? RTC_BUILD_QUALITY_HIGH
                                                                                               : RTC_BUILD_QUALITY_MEDIUM);
         const std::size_t nv = s.mesh.positions.size(), nt = s.mesh.triangle_count();
         bytes_ = 0;
+        vertices_ = triangles_ = 0;
         if (nt > 0) {
             RTCGeometry geom = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
             rtcSetGeometryBuildQuality(geom, config_.build_quality == embree_config::quality::high ? RTC_BUILD_QUALITY_HIGH
@@ -115,6 +132,7 @@ public:
             rtcAttachGeometry(scene_, geom);
             rtcReleaseGeometry(geom);
             bytes_ = nv * 12 + nt * 12;
+            vertices_ = nv, triangles_ = nt;
         }
         rtcCommitScene(scene_);
         if (const RTCError e = rtcGetDeviceError(device_); e != RTC_ERROR_NONE)
@@ -126,11 +144,16 @@ public:
         RTCIntersectContext context;
         rtcInitIntersectContext(&context);
         const int w = config_.packet_image_width;
-        if (w > 0 && w % 4 == 0 && rays.size() % std::size_t(2 * w) == 0) {
+        if (w > 0 && w % 4 == 0 && rays.size() % std::size_t(2 * w) == 0 &&
+            std::all_of(rays.begin(), rays.end(), embree_takes)) {
             intersect_tiles(rays, hits, &context);
             return;
         }
         for (std::size_t i = 0; i < rays.size(); ++i) {
+            if (!embree_takes(rays[i])) {
+                fallback().intersect(rays.subspan(i, 1), hits.subspan(i, 1));
+                continue;
+            }
             RTCRayHit rh = to_embree(rays[i]);
             rtcIntersect1(scene_, &context, &rh);
             hits[i] = from_embree(rh.ray.tfar, rh.hit.geomID, rh.hit.primID, rh.hit.u, rh.hit.v);
@@ -142,6 +165,10 @@ public:
         RTCIntersectContext context;
         rtcInitIntersectContext(&context);
         for (std::size_t i = 0; i < rays.size(); ++i) {
+            if (!embree_takes(rays[i])) {
+                fallback().occluded(rays.subspan(i, 1), blocked.subspan(i, 1));
+                continue;
+            }
             RTCRay r;
             to_embree(rays[i], r);
             rtcOccluded1(scene_, &context, &r);
@@ -207,7 +234,30 @@ private:
             }
     }
 
+    // Brute force over Embree's own copy of the triangles, for the rays Embree cannot take (embree_takes);
+    // made on first need, so that Embree's build and memory stay Embree's.
+    const brute_force& fallback() const {
+        const std::lock_guard<std::mutex> lock(fallback_mutex_);
+        if (!fallback_) {
+            scene copy;
+            if (RTCGeometry g = scene_ ? rtcGetGeometry(scene_, 0) : nullptr) {
+                const auto* v = static_cast<const float*>(rtcGetGeometryBufferData(g, RTC_BUFFER_TYPE_VERTEX, 0));
+                const auto* idx = static_cast<const unsigned*>(rtcGetGeometryBufferData(g, RTC_BUFFER_TYPE_INDEX, 0));
+                copy.mesh.positions.resize(vertices_);
+                for (std::size_t i = 0; i < vertices_; ++i) copy.mesh.positions[i] = vec3(v[3 * i], v[3 * i + 1], v[3 * i + 2]);
+                copy.mesh.indices.resize(triangles_);
+                for (std::size_t i = 0; i < triangles_; ++i) copy.mesh.indices[i] = uvec3(idx[3 * i], idx[3 * i + 1], idx[3 * i + 2]);
+            }
+            fallback_ = std::make_unique<brute_force>();
+            fallback_->build(copy);
+        }
+        return *fallback_;
+    }
+
     embree_config config_;
+    mutable std::mutex fallback_mutex_;
+    mutable std::unique_ptr<brute_force> fallback_;
+    std::size_t vertices_ = 0, triangles_ = 0;
     RTCDevice device_ = nullptr;
     RTCScene scene_ = nullptr;
     std::size_t bytes_ = 0;
