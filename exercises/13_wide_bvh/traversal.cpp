@@ -1,4 +1,4 @@
-// Exercises 13.2 the node test (6 points) and 13.3 the ordered push (5 points). Read: I. Wald, C. Benthin and
+// Exercises 13.2 the node test (3 points) and 13.3 the ordered push (5 points). Read: I. Wald, C. Benthin and
 // S. Boulos, "Getting rid of packets", IEEE RT 2008, section 4; chapter 05's slab_test.hpp (the fast test
 // this one widens to N boxes).
 #include "strahl/ch13/wide_traverse.hpp"

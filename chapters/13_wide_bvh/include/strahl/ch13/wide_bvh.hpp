@@ -53,7 +53,7 @@ static_assert(sizeof(wide_node<4>) == 128 && sizeof(wide_node<8>) == 256 && size
 
 // M triangles in structure of arrays, what the leaf test needs precomputed: the first vertex and the two
 // edges e1 = v1 - v0, e2 = v2 - v0 (computed as exercise 01.3 computes them, so the test rounds the same),
-// and the primitive ids. Unused lanes have id invalid_id and zero edges (determinant 0: never a hit).
+// and the primitive ids. Lanes past a leaf's last triangle repeat it: the same answer twice changes nothing.
 template <int M>
 struct alignas(64) triangle_block {
     float v0[3][M];
