@@ -22,6 +22,13 @@ std::unique_ptr<accel> make_built(const std::string& name, const scene& s, const
     return a;
 }
 
+// Where this build has no Embree: says so (a warning in the log) and returns true, so the test returns.
+bool skipped_without_embree() {
+    if (embree_available()) return false;
+    WARN("skipped: this build has no Embree 3");
+    return true;
+}
+
 // Compares embree-medium and embree-high with brute force on the three ray sets of s; at most
 // `allowed_percent` of each set's rays may differ (closest: a different primitive or hit/miss; any: the
 // other answer).
@@ -70,34 +77,22 @@ TEST_CASE("ch16 embree: available where found, refused clearly where not", "[ch1
 }
 
 TEST_CASE("ch16 embree: agrees with brute force on the teapot but for a handful of rays", "[ch16][embree]") {
-    if (!embree_available()) {
-        WARN("skipped: this build has no Embree 3");
-        return;
-    }
+    if (skipped_without_embree()) return;
     check_embree(builtin_scene("teapot"), 48, 36, 1.0);
 }
 
 TEST_CASE("ch16 embree: agrees with brute force on a random soup but for a handful of rays", "[ch16][embree]") {
-    if (!embree_available()) {
-        WARN("skipped: this build has no Embree 3");
-        return;
-    }
+    if (skipped_without_embree()) return;
     check_embree(builtin_scene("soup"), 48, 36, 1.0);
 }
 
 TEST_CASE("ch16 embree: agrees with brute force on the teapot in a stadium", "[ch16][embree]") {
-    if (!embree_available()) {
-        WARN("skipped: this build has no Embree 3");
-        return;
-    }
+    if (skipped_without_embree()) return;
     check_embree(builtin_scene("teapot_stadium"), 48, 36, 1.0);
 }
 
 TEST_CASE("ch16 embree: agrees with brute force on the bunny", "[ch16][embree]") {
-    if (!embree_available()) {
-        WARN("skipped: this build has no Embree 3");
-        return;
-    }
+    if (skipped_without_embree()) return;
     const std::filesystem::path file = test::shared_scene("bunny.ply");
     if (file.empty()) {
         WARN("skipped: ../shared/scenes/bunny.ply is not beside this clone");
@@ -107,10 +102,7 @@ TEST_CASE("ch16 embree: agrees with brute force on the bunny", "[ch16][embree]")
 }
 
 TEST_CASE("ch16 embree: an empty scene misses everything", "[ch16][embree]") {
-    if (!embree_available()) {
-        WARN("skipped: this build has no Embree 3");
-        return;
-    }
+    if (skipped_without_embree()) return;
     scene empty;
     empty.name = "empty";
     const std::vector<ray> rays = primary_rays(builtin_scene("teapot"), 8, 6);
@@ -129,10 +121,7 @@ TEST_CASE("ch16 embree: an empty scene misses everything", "[ch16][embree]") {
 }
 
 TEST_CASE("ch16 embree: 4x2 packets give the single-ray path's primitives on primary rays", "[ch16][embree]") {
-    if (!embree_available()) {
-        WARN("skipped: this build has no Embree 3");
-        return;
-    }
+    if (skipped_without_embree()) return;
     for (const char* scene_name : {"teapot", "soup", "teapot_stadium"}) {
         const scene s = builtin_scene(scene_name);
         const int width = 48, height = 36;
@@ -170,10 +159,7 @@ TEST_CASE("ch16 embree: called as its documentation asks (FTZ and DAZ on inside 
         CHECK(denormals_are_flushed());
     }
     CHECK_FALSE(denormals_are_flushed());
-    if (!embree_available()) {
-        WARN("skipped: this build has no Embree 3");
-        return;
-    }
+    if (skipped_without_embree()) return;
     const scene s = builtin_scene("teapot");
     const int width = 32, height = 24;
     const std::vector<ray> rays = primary_rays(s, width, height);
@@ -203,10 +189,7 @@ TEST_CASE("ch16 embree: called as its documentation asks (FTZ and DAZ on inside 
 // The course's interval is open at both ends; Embree's test excludes t = tnear by itself, and the wrapper
 // moves tfar inwards by one ulp. A triangle in the plane z = 0 and rays along z.
 TEST_CASE("ch16 embree: hits exactly at tmin or tmax are not hits, as for the course's structures", "[ch16][embree]") {
-    if (!embree_available()) {
-        WARN("skipped: this build has no Embree 3");
-        return;
-    }
+    if (skipped_without_embree()) return;
     scene s;
     s.name = "one triangle";
     s.mesh.positions = {vec3(-1.0f, -1.0f, 0.0f), vec3(3.0f, -1.0f, 0.0f), vec3(-1.0f, 3.0f, 0.0f)};
@@ -258,10 +241,7 @@ TEST_CASE("ch16 embree: its own report names the version and the kernels it runs
 // the wrapper must answer those rays itself (with brute force), and pass Embree only the others.
 TEST_CASE("ch16 embree: rays Embree cannot take (negative tmin, huge components) get brute force's answer, "
           "no abort", "[ch16][embree]") {
-    if (!embree_available()) {
-        WARN("skipped: this build has no Embree 3");
-        return;
-    }
+    if (skipped_without_embree()) return;
     const scene s = builtin_scene("teapot");
     std::vector<ray> rays = primary_rays(s, 16, 12);
     const std::size_t n = rays.size();

@@ -109,6 +109,7 @@ public:
         split_.assign(n, {});
         tris_.assign(n, 0);
         leaf_choice_.assign(n, false);
+        node_split_.assign(n, 1);
         for (std::size_t ii = n; ii-- > 0;) {
             const std::uint32_t i = std::uint32_t(ii);
             const float a = area(i);
@@ -131,6 +132,7 @@ public:
                     if (c < dist[j]) dist[j] = c, best_k[j] = k;
                 }
             }
+            node_split_[i] = std::int8_t(best_k[N]);  // a wide node here splits its N slots so
             const float as_node = a * c_node + dist[N];
             const float as_leaf = tris_[i] <= std::size_t(max_leaf) ? a * c_block * float((tris_[i] + M - 1) / M)
                                                                       : infinite_cost;
@@ -160,22 +162,13 @@ public:
     std::uint32_t optimal(std::uint32_t i) {
         if (leaf_choice_[i]) return make_leaf(i);
         std::vector<std::uint32_t> kids;
-        const int k = best_root_split(i);
+        const int k = node_split_[i];
         distribute(left(i), k, kids);
         distribute(right(i), N - k, kids);
         return make_node(kids, [&](std::uint32_t c) { return optimal(c); });
     }
 
 private:
-    int best_root_split(std::uint32_t i) const {
-        float best = infinite_cost;
-        int best_k = 1;
-        for (int k = 1; k < N; ++k) {
-            const float c = cost_[left(i)][k] + cost_[right(i)][N - k];
-            if (c < best) best = c, best_k = k;
-        }
-        return best_k;
-    }
     void gather(std::uint32_t i, std::vector<std::uint32_t>& ids) const {
         const ch04::bvh_node& n = t_.nodes[i];
         if (n.is_leaf()) {
@@ -194,6 +187,7 @@ private:
     std::vector<std::uint32_t> scratch_;
     std::vector<std::size_t> tris_;
     std::vector<bool> leaf_choice_;
+    std::vector<std::int8_t> node_split_;  // slots a wide node at binary node i gives its left child
 };
 
 }  // namespace

@@ -34,8 +34,13 @@ inline float ray_slack(const ray& r, const aabb& box) {
     return (reach * 0x1p-16f + 1e-5f * diag) / len;
 }
 
-template <class Set, class Stats, class Walk>
-hit tree_closest(const Set& set, std::span<const std::uint32_t> loose, const ray& query, Stats& stats, Walk&& walk) {
+// The rules above around a structure's own descent: descend(r, best) for closest hit, descend(r) -> found
+// for any hit, called only for a placeable ray with a non-empty interval, after the loose primitives.
+// tree_closest and tree_any below descend through leaves of primitive ids; a structure whose leaves hold
+// something else (chapter 13's triangle blocks) calls these directly.
+template <class Set, class Stats, class Descend>
+hit tree_closest_with(const Set& set, std::span<const std::uint32_t> loose, const ray& query, Stats& stats,
+                      Descend&& descend) {
     stats.ray();
     hit best;
     if (!(query.tmin < query.tmax)) return best;  // an empty (or NaN) interval: a miss
@@ -45,15 +50,13 @@ hit tree_closest(const Set& set, std::span<const std::uint32_t> loose, const ray
         for (std::uint32_t id = 0; id < set.size(); ++id) stats.prim_test(), set.intersect(id, r, best);
         return best;
     }
-    walk(r, [&](const std::uint32_t* ids, std::uint32_t count) {
-        for (std::uint32_t k = 0; k < count; ++k) stats.prim_test(), set.intersect(ids[k], r, best);
-        return false;  // a closest-hit query visits every leaf the (shrinking) r.tmax still reaches
-    });
+    descend(r, best);
     return best;
 }
 
-template <class Set, class Stats, class Walk>
-bool tree_any(const Set& set, std::span<const std::uint32_t> loose, const ray& query, Stats& stats, Walk&& walk) {
+template <class Set, class Stats, class Descend>
+bool tree_any_with(const Set& set, std::span<const std::uint32_t> loose, const ray& query, Stats& stats,
+                   Descend&& descend) {
     stats.ray();
     if (!(query.tmin < query.tmax)) return false;
     for (const std::uint32_t id : loose)
@@ -64,12 +67,29 @@ bool tree_any(const Set& set, std::span<const std::uint32_t> loose, const ray& q
         return false;
     }
     ray r = query;
-    bool found = false;
-    walk(r, [&](const std::uint32_t* ids, std::uint32_t count) {
-        for (std::uint32_t k = 0; k < count && !found; ++k) stats.prim_test(), found = set.occludes(ids[k], query);
-        return found;  // any hit ends the walk
+    return descend(r);
+}
+
+template <class Set, class Stats, class Walk>
+hit tree_closest(const Set& set, std::span<const std::uint32_t> loose, const ray& query, Stats& stats, Walk&& walk) {
+    return tree_closest_with(set, loose, query, stats, [&](ray& r, hit& best) {
+        walk(r, [&](const std::uint32_t* ids, std::uint32_t count) {
+            for (std::uint32_t k = 0; k < count; ++k) stats.prim_test(), set.intersect(ids[k], r, best);
+            return false;  // a closest-hit query visits every leaf the (shrinking) r.tmax still reaches
+        });
     });
-    return found;
+}
+
+template <class Set, class Stats, class Walk>
+bool tree_any(const Set& set, std::span<const std::uint32_t> loose, const ray& query, Stats& stats, Walk&& walk) {
+    return tree_any_with(set, loose, query, stats, [&](ray& r) {
+        bool found = false;
+        walk(r, [&](const std::uint32_t* ids, std::uint32_t count) {
+            for (std::uint32_t k = 0; k < count && !found; ++k) stats.prim_test(), found = set.occludes(ids[k], query);
+            return found;  // any hit ends the walk
+        });
+        return found;
+    });
 }
 
 }  // namespace strahl

@@ -9,20 +9,11 @@
 #include "strahl/ch13/block_test.hpp"
 #include "strahl/ch13/wide_traverse.hpp"
 #include "strahl/tree_query.hpp"
-#include <bit>
-#include <limits>
 #include <stdexcept>
 
 namespace strahl::ch13 {
 
 namespace {
-
-// std::nextafter(t, +inf) for a finite t, without the library call: the next float above t.
-[[gnu::always_inline]] inline float next_up(float t) {
-    if (t == 0.0f) return std::numeric_limits<float>::denorm_min();  // +0 and -0
-    const std::uint32_t bits = std::bit_cast<std::uint32_t>(t);
-    return std::bit_cast<float>(t > 0.0f ? bits + 1 : bits - 1);  // away from 0 above it, towards 0 below
-}
 
 template <int N, int M>
 class wide_accel final : public per_ray_accel<wide_accel<N, M>, wide_accel_base> {
@@ -49,66 +40,50 @@ public:
     // The wide tree and its blocks; the triangle set is kept for loose primitives and unplaceable rays.
     std::size_t memory_bytes() const override { return tree_.memory_bytes() + (set_ ? set_->memory_bytes() : 0); }
 
+    // tree_query.hpp's rules (loose primitives, rays no tree can place) around the wide walk.
     template <class Stats>
     hit closest(const ray& query, Stats& stats) const {
-        stats.ray();
-        hit best;
-        if (!set_ || !(query.tmin < query.tmax)) return best;
-        ray r = query;
-        for (const std::uint32_t id : tree_.loose) stats.prim_test(), set_->intersect(id, r, best);
-        if (!placeable(r)) {
-            for (std::uint32_t id = 0; id < set_->size(); ++id) stats.prim_test(), set_->intersect(id, r, best);
-            return best;
-        }
-        const ray_lanes<M> lanes(r);
-        wide_traverse<visit_order::nearest>(tree_, r, stats, [&](std::uint32_t ref) {
-            const triangle_block<M>* b = &tree_.blocks[leaf_first(ref)];
-            for (std::uint32_t k = leaf_blocks(ref); k-- > 0; ++b) {
-                stats.prim_test(M);
-                simd::vfloat<M> t, u, v;
-                unsigned bits = simd::movemask(intersect_block(*b, lanes, r.tmin, r.tmax, t, u, v));
-                if (bits == 0) continue;
-                alignas(64) float ts[M], us[M], vs[M];
-                t.store(ts), u.store(us), v.store(vs);
-                for (; bits != 0; bits &= bits - 1) {
-                    // Chapter 01's record_closest, with std::nextafter (a library call) inlined.
-                    const int i = std::countr_zero(bits);
-                    if (!closer(ts[i], b->id[i], best)) continue;
-                    best = hit{ts[i], b->id[i], us[i], vs[i], invalid_id};
-                    r.tmax = next_up(ts[i]);
+        if (!set_) return hit{};
+        return tree_closest_with(*set_, tree_.loose, query, stats, [&](ray& r, hit& best) {
+            const ray_lanes<M> lanes(r);
+            wide_traverse<visit_order::nearest>(tree_, r, stats, [&](std::uint32_t ref) {
+                const triangle_block<M>* b = &tree_.blocks[leaf_first(ref)];
+                for (std::uint32_t k = leaf_blocks(ref); k-- > 0; ++b) {
+                    stats.prim_test(M);
+                    simd::vfloat<M> t, u, v;
+                    unsigned bits = simd::movemask(intersect_block(*b, lanes, r.tmin, r.tmax, t, u, v));
+                    if (bits == 0) continue;
+                    alignas(64) float ts[M], us[M], vs[M];
+                    t.store(ts), u.store(us), v.store(vs);
+                    for (; bits != 0; bits &= bits - 1) {
+                        const int i = std::countr_zero(bits);
+                        ch01::record_closest(b->id[i], ts[i], us[i], vs[i], r, best);
+                    }
                 }
-            }
-            return false;
+                return false;
+            });
         });
-        return best;
     }
 
     template <class Stats>
     bool any(const ray& query, Stats& stats) const {
-        stats.ray();
-        if (!set_ || !(query.tmin < query.tmax)) return false;
-        for (const std::uint32_t id : tree_.loose)
-            if (stats.prim_test(), set_->occludes(id, query)) return true;
-        if (!placeable(query)) {
-            for (std::uint32_t id = 0; id < set_->size(); ++id)
-                if (stats.prim_test(), set_->occludes(id, query)) return true;
-            return false;
-        }
-        ray r = query;
-        const ray_lanes<M> lanes(r);
-        bool found = false;
-        const auto leaf = [&](std::uint32_t ref) {
-            const triangle_block<M>* b = &tree_.blocks[leaf_first(ref)];
-            for (std::uint32_t k = leaf_blocks(ref); k-- > 0 && !found; ++b) {
-                stats.prim_test(M);
-                simd::vfloat<M> t, u, v;
-                found = simd::any(intersect_block(*b, lanes, r.tmin, r.tmax, t, u, v));
-            }
+        if (!set_) return false;
+        return tree_any_with(*set_, tree_.loose, query, stats, [&](ray& r) {
+            const ray_lanes<M> lanes(r);
+            bool found = false;
+            const auto leaf = [&](std::uint32_t ref) {
+                const triangle_block<M>* b = &tree_.blocks[leaf_first(ref)];
+                for (std::uint32_t k = leaf_blocks(ref); k-- > 0 && !found; ++b) {
+                    stats.prim_test(M);
+                    simd::vfloat<M> t, u, v;
+                    found = simd::any(intersect_block(*b, lanes, r.tmin, r.tmax, t, u, v));
+                }
+                return found;
+            };
+            if (any_nearest_) wide_traverse<visit_order::nearest>(tree_, r, stats, leaf);
+            else wide_traverse<visit_order::stored>(tree_, r, stats, leaf);
             return found;
-        };
-        if (any_nearest_) wide_traverse<visit_order::nearest>(tree_, r, stats, leaf);
-        else wide_traverse<visit_order::stored>(tree_, r, stats, leaf);
-        return found;
+        });
     }
 
 private:
