@@ -44,6 +44,8 @@ case $nn in
     sized=() ;;
 06) args=(--quick --width 48 --repeats 1 --out "$out") files=(refinement.csv sah_vs_time_stadium.svg)
     sized=() ;;
+11) args=(--quick --width 32 --out "$out") files=(steps.csv render.csv staircase.svg render.png)
+    sized=(render.png:"32 32") ;;
 13) args=(--quick --width 32 --repeats 1 --out "$out") files=(wide.csv speedup.svg)
     sized=() ;;
 *) echo "$0: no end-to-end run known for chapter $nn" >&2; exit 2 ;;

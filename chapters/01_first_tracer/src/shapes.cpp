@@ -28,11 +28,18 @@ plane::plane(const vec3& normal, float offset, std::uint32_t material_id)
 
 // dot(n, org + t dir) = offset  =>  t = (offset - dot(n, org)) / dot(n, dir); no hit when the ray runs
 // parallel to the plane (or holds a NaN: every comparison with NaN is false).
-bool plane::intersect(const ray& r, hit& h) const {
-    const float denom = glm::dot(normal_, r.dir);
+bool intersect_plane(const ray& r, const vec3& normal, float offset, float& t) {
+    const float denom = glm::dot(normal, r.dir);
     if (!(denom != 0.0f)) return false;
-    const float t = (offset_ - glm::dot(normal_, r.org)) / denom;
-    if (!(t > r.tmin && t < r.tmax)) return false;
+    const float tp = (offset - glm::dot(normal, r.org)) / denom;
+    if (!(tp > r.tmin && tp < r.tmax)) return false;
+    t = tp;
+    return true;
+}
+
+bool plane::intersect(const ray& r, hit& h) const {
+    float t;
+    if (!intersect_plane(r, normal_, offset_, t)) return false;
     h.t = t;
     h.u = h.v = 0.0f;
     return true;

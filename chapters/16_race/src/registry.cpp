@@ -7,6 +7,7 @@
 #include "strahl/ch04/accel.hpp"
 #include "strahl/ch05/accel.hpp"
 #include "strahl/ch06/accel.hpp"
+#include "strahl/ch11/steps.hpp"
 #include "strahl/ch13/accel.hpp"
 #include <optional>
 #include <stdexcept>
@@ -25,6 +26,12 @@ ch06::refine_params refined(ch06::start_tree start, ch06::refine_method method) 
     p.start = start;
     p.method = method;
     return p;
+}
+// Chapter 11: one step of devirtualization over chapter 05's binned SAH tree and fast walk.
+accel_entry ch11_step(ch11::step s) {
+    const ch11::step_info& i = ch11::info(s);
+    return {std::string("ch11-") + i.name, "11", std::string("chapter 05's binned SAH tree, fast walk; ") + i.what,
+            [s] { return std::unique_ptr<accel>(ch11::make_accel(s)); }};
 }
 // Chapter 13: chapter 05's fast binned tree (or chapter 06's reinserted one) collapsed into a wide tree.
 accel_entry wide(std::string name, std::string description, int width, int block, ch13::collapse_method method,
@@ -77,6 +84,8 @@ std::vector<accel_entry> registered_accels(const registry_options& o) {
              return ch06::make_accel(false, refined(ch06::start_tree::binned16, ch06::refine_method::reinsertion),
                                      ch05::walk_kind::fast);
          }},
+        ch11_step(ch11::step::virtual_calls), ch11_step(ch11::step::variant), ch11_step(ch11::step::type_sorted),
+        ch11_step(ch11::step::triangles_only), ch11_step(ch11::step::inlined), ch11_step(ch11::step::soa),
         wide("ch13-bvh4", "chapter 05's binned SAH tree collapsed greedily into 4-wide nodes, leaves in blocks of 4 triangles",
              4, 4, ch13::collapse_method::greedy),
         wide("ch13-bvh8", "the same tree collapsed greedily into 8-wide nodes, blocks of 4", 8, 4, ch13::collapse_method::greedy),

@@ -20,6 +20,10 @@ bool intersect_sphere(const ray& r, const vec3& center, float radius, float& t);
 bool intersect_triangle(const ray& r, const vec3& v0, const vec3& v1, const vec3& v2, float& t, float& u,
                         float& v);
 
+// Ray/plane for the plane of points p with dot(normal, p) == offset: t = (offset - dot(normal, org)) /
+// dot(normal, dir), accepted in (tmin, tmax); no hit for a ray parallel to the plane or holding a NaN.
+bool intersect_plane(const ray& r, const vec3& normal, float offset, float& t);
+
 class sphere final : public primitive {
 public:
     sphere(const vec3& center, float radius, std::uint32_t material_id = 0);

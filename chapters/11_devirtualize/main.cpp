@@ -1,0 +1,232 @@
+// ch11: model only what the scene requires. Chapter 05's binned SAH tree and chapter 05's fast walk, the
+// same rays throughout, and six ways for a leaf to reach its primitives (virtual objects, a variant,
+// type-sorted arrays, triangles only, inlined, structure of arrays): Mrays/s on one thread for primary,
+// diffuse and shadow rays on the bunny and Sponza (the teapot in a stadium where they are absent), each
+// step's speed-up over the first. Then chapter 01's Whitted renderer with rough reflection on the Cornell
+// box with the bunny: virtual primitives and materials, a variant of both, triangles only with virtual
+// materials and with a switch; rays per second, the images compared bit for bit. Tables, CSV files, plots.
+#include "strahl/ch01/ray_sets.hpp"
+#include "strahl/ch05/accel.hpp"
+#include "strahl/ch11/steps.hpp"
+#include "strahl/parallel.hpp"
+#include "strahl/plot.hpp"
+#include "strahl/procedural.hpp"
+#include "strahl/program.hpp"
+#include "strahl/timer.hpp"
+#include <algorithm>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+#ifndef STRAHL_TRACK
+#define STRAHL_TRACK "solutions"
+#endif
+
+namespace {
+
+using namespace strahl;
+namespace fs = std::filesystem;
+
+struct step_row {
+    std::string scene, step;
+    double memory_mib = 0, primary = 0, diffuse = 0, shadow = 0;
+    std::size_t differing = 0;
+};
+
+void write_text(const fs::path& file, const std::string& text) {
+    std::ofstream f(file);
+    f << text;
+    f.close();
+    if (!f) throw std::runtime_error("cannot write " + file.string());
+}
+
+std::vector<step_row> run_steps(const scene& s, const std::string& name, int width, int height, int repeats) {
+    std::printf("%s: %zu triangles; %d x %d primary rays, as many diffuse and shadow rays; one thread, median of %d\n",
+                name.c_str(), s.mesh.triangle_count(), width, height, repeats);
+    const auto reference = ch05::make_accel(false, {}, ch05::walk_kind::fast);
+    reference->build(s);
+    const ch01::checked_rays rays = ch01::make_checked_rays(s, width, height, *reference);
+    const std::vector<ray> shadow = ch01::secondary_rays(ch01::ray_kind::shadow, s, rays.primary, rays.primary_hits);
+    std::vector<std::uint8_t> shadow_ref(shadow.size());
+    reference->occluded(shadow, shadow_ref);
+    std::printf("  %-12s %8s %9s %9s %9s %6s   %s\n", "step", "MiB", "primary", "diffuse", "shadow", "differ",
+                "(Mrays/s; x step 1)");
+    std::vector<step_row> rows;
+    for (const ch11::step_info& st : ch11::all_steps()) {
+        step_row r{name, st.name};
+        const auto a = ch11::make_accel(st.id);
+        a->build(s);
+        r.memory_mib = double(a->memory_bytes()) / (1024.0 * 1024.0);
+        const ch01::checked_speed speed = ch01::time_checked(*a, rays, repeats);
+        r.primary = speed.primary_mrays, r.diffuse = speed.diffuse_mrays, r.differing = speed.differing;
+        std::vector<std::uint8_t> blocked(shadow.size());
+        const double ms = median_ms(repeats, [&] { a->occluded(shadow, blocked); });
+        r.shadow = ms > 0 ? double(shadow.size()) / ms * 1e-3 : 0.0;
+        for (std::size_t i = 0; i < shadow.size(); ++i) r.differing += blocked[i] != shadow_ref[i];
+        const step_row& first = rows.empty() ? r : rows.front();
+        std::printf("  %-12s %8.2f %9.2f %9.2f %9.2f %6zu   x%.2f x%.2f x%.2f\n", r.step.c_str(), r.memory_mib, r.primary,
+                    r.diffuse, r.shadow, r.differing, r.primary / first.primary, r.diffuse / first.diffuse,
+                    r.shadow / first.shadow);
+        std::fflush(stdout);
+        rows.push_back(r);
+    }
+    return rows;
+}
+
+// The Cornell box with its mirror and rough-mirror spheres, and the bunny (or chapter 01's teapot where the
+// shared meshes are absent) standing at the back right in a white Lambert.
+scene render_scene() {
+    scene s = cornell_box(true);
+    s.name = "cornell+bunny";
+    triangle_mesh m;
+    if (const auto bunny = load_shared_mesh("bunny.ply", "bunny")) m = bunny->mesh;
+    else m = teapot_mesh(6), s.name = "cornell+teapot";
+    aabb box;
+    for (const vec3& p : m.positions) box.grow(p);
+    const float scale = 0.38f / std::max(box.extent().x, std::max(box.extent().y, box.extent().z));
+    const vec3 foot((box.min.x + box.max.x) / 2, box.min.y, (box.min.z + box.max.z) / 2);
+    for (vec3& p : m.positions) p = (p - foot) * scale + vec3(0.68f, 0.0f, 0.32f);
+    const std::uint32_t white = std::uint32_t(s.materials.size());
+    s.materials.push_back(material_desc{"bunny", material_kind::diffuse, color(0.75f)});
+    if (s.triangle_materials.empty()) s.triangle_materials.assign(s.mesh.triangle_count(), 0);
+    s.mesh.append(m);
+    s.triangle_materials.resize(s.mesh.triangle_count(), white);
+    return s;
+}
+
+struct render_row {
+    std::string renderer;
+    double mrays = 0, seconds = 0;
+    std::uint64_t rays = 0;
+    bool same_image = true;
+};
+
+std::vector<render_row> run_renderers(const scene& s, int width, int glossy, int repeats, const fs::path& png) {
+    const int height = width;
+    const camera cam(s.camera, width, height);
+    ch01::render_settings settings;
+    std::printf("\n%s: %zu triangles, %zu spheres; Whitted with rough reflection (%d rays per rough hit), %d x %d, one "
+                "thread, median of %d renders\n", s.name.c_str(), s.mesh.triangle_count(), s.spheres.size(), glossy,
+                width, height, repeats);
+    std::printf("  %-18s %10s %12s %10s %s\n", "renderer", "Mrays/s", "rays", "x virtual", "image");
+    std::vector<render_row> rows;
+    image first;
+    for (const ch11::renderer& how : ch11::all_renderers()) {
+        render_row r{how.name};
+        std::vector<double> seconds;
+        ch01::render_result res = ch11::render(s, cam, how, settings, glossy);  // warm-up, untimed
+        for (int k = 0; k < repeats; ++k) res = ch11::render(s, cam, how, settings, glossy), seconds.push_back(res.seconds);
+        std::sort(seconds.begin(), seconds.end());
+        r.seconds = seconds[seconds.size() / 2];
+        r.rays = res.counts.total();
+        r.mrays = double(r.rays) / r.seconds * 1e-6;
+        if (rows.empty()) first = res.img, write_image(png, res.img);
+        else r.same_image = first.pixels.size() == res.img.pixels.size() &&
+                            std::memcmp(first.pixels.data(), res.img.pixels.data(), first.pixels.size() * sizeof(color)) == 0;
+        std::printf("  %-18s %10.2f %12llu %10.2f %s\n", r.renderer.c_str(), r.mrays, (unsigned long long)r.rays,
+                    r.mrays / (rows.empty() ? r.mrays : rows.front().mrays), r.same_image ? "same" : "DIFFERS");
+        std::fflush(stdout);
+        rows.push_back(r);
+    }
+    return rows;
+}
+
+void write_outputs(const std::vector<step_row>& steps, const std::vector<render_row>& renders, const fs::path& folder) {
+    std::ostringstream csv;
+    csv << "scene,step,memory_mib,primary_mrays_s,diffuse_mrays_s,shadow_mrays_s,differing\n";
+    for (const step_row& r : steps)
+        csv << r.scene << ',' << r.step << ',' << r.memory_mib << ',' << r.primary << ',' << r.diffuse << ',' << r.shadow
+            << ',' << r.differing << '\n';
+    write_text(folder / "steps.csv", csv.str());
+    std::ostringstream rcsv;
+    rcsv << "renderer,mrays_s,rays,seconds,same_image\n";
+    for (const render_row& r : renders)
+        rcsv << r.renderer << ',' << r.mrays << ',' << r.rays << ',' << r.seconds << ',' << (r.same_image ? 1 : 0) << '\n';
+    write_text(folder / "render.csv", rcsv.str());
+    // The staircase: each step's speed over step 1's, one bar per scene and ray set.
+    bar_chart c{"Each step's speed over chapter 01's virtual objects (same tree, same rays, one thread)", "x step 1",
+                {}, {}, {}, false};
+    for (const ch11::step_info& st : ch11::all_steps()) c.categories.push_back(st.name);
+    std::vector<std::string> scenes;
+    for (const step_row& r : steps)
+        if (std::find(scenes.begin(), scenes.end(), r.scene) == scenes.end()) scenes.push_back(r.scene);
+    for (const std::string& name : scenes)
+        for (int kind = 0; kind < 3; ++kind) {
+            std::vector<double> v;
+            const step_row* base = nullptr;
+            for (const step_row& r : steps)
+                if (r.scene == name) {
+                    if (!base) base = &r;
+                    const double x[] = {r.primary / base->primary, r.diffuse / base->diffuse, r.shadow / base->shadow};
+                    v.push_back(x[kind]);
+                }
+            c.series_labels.push_back(name + (kind == 0 ? " primary" : kind == 1 ? " diffuse" : " shadow"));
+            c.values.push_back(v);
+        }
+    write_svg(folder / "staircase.svg", to_svg(c, 820, 460));
+}
+
+int run(int argc, const char* const* argv) {
+    cli args("ch11", "Chapter 11, model only what the scene requires (" STRAHL_TRACK "): one tree, the same rays, six "
+             "ways to reach the primitives (virtual, variant, type-sorted, triangles, inlined, soa), one thread; then "
+             "the Whitted renderer with virtual materials, a variant and a switch. Tables, CSV files, plots, an image.");
+    args.option("scene", "NAME", "all", "bunny, sponza, stadium or all (all: bunny and Sponza where present, else the stadium)")
+        .option("width", "N", "", "primary rays per row (default 192, 64 with --quick)")
+        .option("height", "N", "", "rows (default 3/4 of the width)")
+        .option("repeats", "K", "5", "timed runs per measurement after a warm-up; the median is reported")
+        .option("render-size", "N", "", "the render's width and height in pixels (default 128, 32 with --quick)")
+        .option("glossy-samples", "S", "16", "reflection rays per rough-mirror hit, 1 to 64")
+        .option("out", "DIR", "", "write steps.csv, render.csv, staircase.svg and render.png into DIR/ "
+                                   "(default out/11_devirtualize/)")
+        .flag("force", "replace existing files in a folder named with --out")
+        .flag("quick", "the teapot in a stadium only, 64 x 48 rays, a 32 x 32 render, one repeat");
+    if (!args.parse(argc, argv)) return 0;
+    const bool quick = args.has("quick");
+    fs::path folder = "out/11_devirtualize";
+    const bool user_named = args.has("out");
+    if (user_named) folder = args.get("out");
+    for (const char* f : {"steps.csv", "render.csv", "staircase.svg", "render.png"})
+        prepare_output(folder / f, user_named, args.has("force"));
+    const image_size size = read_image_size(args, quick ? 64 : 192, 4096);
+    const int repeats = quick ? 1 : args.get_int("repeats");
+    if (repeats < 1 || repeats > 100) throw usage_error("--repeats must lie in [1, 100]");
+    const int render_size = args.has("render-size") ? args.get_int("render-size") : quick ? 32 : 128;
+    if (render_size < 1 || render_size > 2048) throw usage_error("--render-size must lie in [1, 2048]");
+    const int glossy = args.get_int("glossy-samples");
+    if (glossy < 1 || glossy > 64) throw usage_error("--glossy-samples must lie in [1, 64]");
+    const std::string which = quick ? "stadium" : args.get("scene");
+    if (which != "all" && which != "stadium" && which != "bunny" && which != "sponza")
+        throw usage_error("--scene must be bunny, sponza, stadium or all, not '" + which + "'");
+    const thread_limit one(1);
+    std::vector<step_row> rows;
+    for (const auto& [name, file] : {std::pair{"bunny", "bunny.ply"}, std::pair{"sponza", "sponza.obj"}}) {
+        if (which != "all" && which != name) continue;
+        if (const auto s = load_shared_mesh(file, name)) {
+            const auto r = run_steps(*s, name, size.width, size.height, repeats);
+            rows.insert(rows.end(), r.begin(), r.end());
+        }
+    }
+    if (which == "stadium" || (which == "all" && rows.empty()))
+        rows = run_steps(builtin_scene("teapot_stadium"), "stadium", size.width, size.height, repeats);
+    const std::vector<render_row> renders =
+        run_renderers(render_scene(), render_size, glossy, std::min(repeats, 3), folder / "render.png");
+    write_outputs(rows, renders, folder);
+    std::printf("wrote %s/{steps.csv, render.csv, staircase.svg, render.png}\n", folder.string().c_str());
+    std::size_t wrong = 0;
+    for (const step_row& r : rows) wrong += r.differing;
+    for (const render_row& r : renders) wrong += !r.same_image;
+    if (wrong) {
+        std::printf("%zu answers or images differ from the reference: a bug\n", wrong);
+        return 1;
+    }
+    std::printf("against Embree on the same rays: build/release/bin/race --accels ch11-virtual,ch11-soa,embree-medium\n");
+    return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    const bool exercises = std::string(STRAHL_TRACK) == "exercises";
+    return guarded_main(exercises ? "ch11_exercise" : "ch11", run, argc, argv);
+}
