@@ -117,6 +117,16 @@ if [[ $nn == 05 || $nn == 06 ]]; then
     fi
 fi
 
+# Chapter 11 draws its staircase from a race's medians (the committed race_ch11.csv), and refuses other files.
+if [[ $nn == 11 ]]; then
+    race_csv="$(dirname "$0")/../slides/img/16_race/race_ch11.csv"
+    runs "--from-race" 0 "$program" --from-race "$race_csv" --out "$dir/from_race"
+    contains "$dir/from_race/staircase.svg" "ch13-bvh16" "--from-race's plot"
+    contains "$dir/from_race/staircase.svg" "type-sorted" "--from-race's plot"
+    runs "--from-race of a foreign file" 1 "$program" --from-race "$out/steps.csv" --out "$dir/from_race2"
+    contains "$dir/err" "is not a race.csv written by the race" "--from-race of a foreign file"
+fi
+
 # Nothing is overwritten unless asked: the same run again is refused and leaves the files as they were.
 cp -r "$out" "$dir/before" 2>/dev/null || mkdir -p "$dir/before"
 runs "second run without --force" 1 "$program" "${args[@]}"

@@ -34,6 +34,8 @@ struct step_row {
     std::size_t differing = 0;
 };
 
+void write_staircase(const std::vector<step_row>& steps, const fs::path& svg, const std::string& how);
+
 void write_text(const fs::path& file, const std::string& text) {
     std::ofstream f(file);
     f << text;
@@ -144,27 +146,67 @@ void write_outputs(const std::vector<step_row>& steps, const std::vector<render_
     for (const render_row& r : renders)
         rcsv << r.renderer << ',' << r.mrays << ',' << r.rays << ',' << r.seconds << ',' << (r.same_image ? 1 : 0) << '\n';
     write_text(folder / "render.csv", rcsv.str());
-    // The staircase: each step's speed over step 1's, one bar per scene and ray set.
-    bar_chart c{"Each step's speed over chapter 01's virtual objects (same tree, same rays, one thread)", "x step 1",
-                {}, {}, {}, false};
-    for (const ch11::step_info& st : ch11::all_steps()) c.categories.push_back(st.name);
+    write_staircase(steps, folder / "staircase.svg", "same tree, same rays, one thread");
+}
+
+// The staircase: each structure's speed over the first's (step 1), one bar per scene and ray set.
+void write_staircase(const std::vector<step_row>& steps, const fs::path& svg, const std::string& how) {
+    bar_chart c{"Speed over chapter 01's virtual objects (" + how + ")", "x step 1", {}, {}, {}, false};
     std::vector<std::string> scenes;
-    for (const step_row& r : steps)
+    for (const step_row& r : steps) {
+        if (std::find(c.categories.begin(), c.categories.end(), r.step) == c.categories.end()) c.categories.push_back(r.step);
         if (std::find(scenes.begin(), scenes.end(), r.scene) == scenes.end()) scenes.push_back(r.scene);
+    }
     for (const std::string& name : scenes)
         for (int kind = 0; kind < 3; ++kind) {
-            std::vector<double> v;
             const step_row* base = nullptr;
-            for (const step_row& r : steps)
-                if (r.scene == name) {
-                    if (!base) base = &r;
-                    const double x[] = {r.primary / base->primary, r.diffuse / base->diffuse, r.shadow / base->shadow};
-                    v.push_back(x[kind]);
-                }
+            std::vector<double> v;
+            for (const std::string& st : c.categories) {
+                double x = 0;
+                for (const step_row& r : steps)
+                    if (r.scene == name && r.step == st) {
+                        if (!base) base = &r;
+                        const double ratio[] = {r.primary / base->primary, r.diffuse / base->diffuse, r.shadow / base->shadow};
+                        x = ratio[kind];
+                    }
+                v.push_back(x);
+            }
             c.series_labels.push_back(name + (kind == 0 ? " primary" : kind == 1 ? " diffuse" : " shadow"));
             c.values.push_back(v);
         }
-    write_svg(folder / "staircase.svg", to_svg(c, 820, 460));
+    write_svg(svg, to_svg(c, 860, 460));
+}
+
+// --from-race: the race's medians across processes (race.csv of race --processes N), its ch11 rows and,
+// where present, ch13-bvh16 and embree-medium beside them. Closest-hit speed for primary and diffuse rays,
+// any-hit speed for shadow rays.
+const char* const race_header = "scene,triangles,structure,chapter,exact,rays,ray_count,build_ms,memory_bytes,sah_cost,"
+                                "closest_mrays_s,closest_runs,closest_vs_embree,closest_box_per_ray,closest_prim_per_ray,"
+                                "closest_nodes_per_ray,closest_differing,any_mrays_s,any_runs,any_vs_embree,"
+                                "any_box_per_ray,any_prim_per_ray,any_differing";
+
+std::vector<step_row> read_race(const fs::path& csv) {
+    std::vector<step_row> rows;
+    const auto find = [&](const std::string& scene, const std::string& step) -> step_row& {
+        for (step_row& r : rows)
+            if (r.scene == scene && r.step == step) return r;
+        return rows.emplace_back(step_row{scene, step});
+    };
+    for (const csv_row& r : read_csv(csv, race_header, "a race.csv written by the race (chapter 16)")) {
+        const std::string& structure = r.cells[2];
+        const std::string& kind = r.cells[5];
+        const bool wanted = structure.rfind("ch11-", 0) == 0 || structure == "ch13-bvh16" || structure == "embree-medium";
+        if (!wanted) continue;
+        std::string scene = r.cells[0];
+        scene = scene.substr(0, scene.find('.'));
+        step_row& row = find(scene, structure.rfind("ch11-", 0) == 0 ? structure.substr(5) : structure);
+        if (kind == "primary") row.primary = csv_number(csv, r, 10);
+        else if (kind == "diffuse") row.diffuse = csv_number(csv, r, 10);
+        else if (kind == "shadow") row.shadow = csv_number(csv, r, 17);
+    }
+    if (rows.empty() || rows.front().step != "virtual")
+        throw std::runtime_error(csv.string() + ": no ch11-virtual rows first: race with --accels ch11-virtual,...");
+    return rows;
 }
 
 int run(int argc, const char* const* argv) {
@@ -179,9 +221,20 @@ int run(int argc, const char* const* argv) {
         .option("glossy-samples", "S", "16", "reflection rays per rough-mirror hit, 1 to 64")
         .option("out", "DIR", "", "write steps.csv, render.csv, staircase.svg and render.png into DIR/ "
                                    "(default out/11_devirtualize/)")
+        .option("from-race", "CSV", "", "only draw staircase.svg from a race's medians (race.csv of race --processes N "
+                                         "with the ch11 rows first; ch13-bvh16 and embree-medium where present)")
         .flag("force", "replace existing files in a folder named with --out")
         .flag("quick", "the teapot in a stadium only, 64 x 48 rays, a 32 x 32 render, one repeat");
     if (!args.parse(argc, argv)) return 0;
+    if (args.has("from-race")) {
+        const std::vector<step_row> rows = read_race(args.get("from-race"));
+        const fs::path folder = args.has("out") ? fs::path(args.get("out")) : fs::path("out/11_devirtualize");
+        prepare_output(folder / "staircase.svg", args.has("out"), args.has("force"));
+        write_staircase(rows, folder / "staircase.svg", "the race's medians, one thread");
+        std::printf("wrote %s from %zu rows of %s\n", (folder / "staircase.svg").string().c_str(), rows.size(),
+                    args.get("from-race").c_str());
+        return 0;
+    }
     const bool quick = args.has("quick");
     fs::path folder = "out/11_devirtualize";
     const bool user_named = args.has("out");
