@@ -192,3 +192,61 @@ TEST_CASE("ch02 grid: cell storage holds every triangle in the cells of its box"
     CHECK(s.references == c.prims.size());
     CHECK(s.references_per_prim >= 1.0);
 }
+
+namespace {
+// n long thin triangles, each from one corner region of the unit cube to the opposite one: every box spans
+// nearly the whole scene, so each triangle falls in nearly every cell.
+triangle_mesh spanning_triangles(std::size_t n) {
+    triangle_mesh m;
+    pcg32 rng(11);
+    for (std::size_t i = 0; i < n; ++i) {
+        const vec3 a(0.01f * rng.next_float(), 0.01f * rng.next_float(), 0.01f * rng.next_float());
+        const vec3 b = vec3(1.0f) - a;
+        const std::uint32_t k = std::uint32_t(m.positions.size());
+        m.positions.insert(m.positions.end(), {a, b, b + vec3(0.0f, 0.001f, 0.0f)});
+        m.indices.push_back(uvec3(k, k + 1, k + 2));
+    }
+    return m;
+}
+}  // namespace
+
+TEST_CASE("ch02 grid: triangles spanning the scene stay within the reference budget, still exact",
+          "[ch02][adversarial]") {
+    // Without the bound, 4,000 spanning triangles at 4 cells per triangle make about 4,000 x 16,000 = 64 M
+    // references; the budget here is 1 M, so the build must lower the resolution and say so.
+    const triangle_mesh m = spanning_triangles(4000);
+    grid_options opt;
+    opt.max_references = std::uint64_t(1) << 20;
+    uniform_grid g;
+    const ch01::triangle_set set(m);
+    g.build(set, opt);
+    CHECK(g.resolution_lowered());
+    CHECK(g.cells().prims.size() <= opt.max_references);
+    CHECK(count_references(g.dims(), std::vector<aabb>{aabb{vec3(0), vec3(1)}}) == std::uint64_t(g.dims().cell_count()));
+    check_against_brute_force(from_mesh("spanning", spanning_triangles(600)), opt, 300);
+    // 30,000 spanning triangles (about 3.6 * 10^9 references unbounded: a crash before the bound existed).
+    const triangle_mesh big = spanning_triangles(30000);
+    opt.max_references = std::uint64_t(1) << 22;
+    uniform_grid g2;
+    g2.build(ch01::triangle_set(big), opt);
+    CHECK(g2.resolution_lowered());
+    CHECK(g2.cells().prims.size() <= opt.max_references);
+}
+
+TEST_CASE("ch02 grid: 200,000 copies of one triangle build within the budget; a budget below the count is refused",
+          "[ch02][adversarial]") {
+    triangle_mesh m;
+    m.positions = {vec3(0), vec3(1, 0, 0), vec3(0, 1, 0)};
+    m.indices.assign(200000, uvec3(0, 1, 2));
+    grid_options opt;
+    opt.max_references = std::uint64_t(1) << 22;
+    uniform_grid g;
+    g.build(ch01::triangle_set(m), opt);
+    CHECK(g.cells().prims.size() <= opt.max_references);
+    CHECK(g.resolution_lowered());
+    opt.max_references = 1000;  // fewer than the triangles: even one cell cannot hold them
+    uniform_grid refused;
+    CHECK_THROWS_WITH(refused.build(ch01::triangle_set(m), opt), Catch::Contains("200000 primitives exceed"));
+    opt.max_references = std::uint64_t(1) << 32;
+    CHECK_THROWS_WITH(refused.build(ch01::triangle_set(m), opt), Catch::Contains("below 2^32"));
+}

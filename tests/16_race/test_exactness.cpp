@@ -171,3 +171,29 @@ TEST_CASE("ch16 exactness: chapter 05's binned SAH with any bin count, found by 
         CHECK_THROWS_WITH(find_accel(bad), Catch::Contains(bad) && Catch::Contains("ch05-binnedK"));
     }
 }
+
+TEST_CASE("ch16 exactness: every exact structure equals brute force seen from far away", "[ch16][exactness]") {
+    // The teapot (about 6 units across) seen from 10^3 and 10^4 units, a narrow field of view framing it:
+    // the rays' origins lie far outside every box, so their t values and the slack are large.
+    for (const float distance : {1e3f, 1e4f}) {
+        scene s = builtin_scene("teapot");
+        s.name = "teapot_from_" + std::to_string(int(distance));
+        const vec3 target(0.2f, 1.4f, 0.0f);
+        s.camera = camera_desc{target + glm::normalize(vec3(0.3f, 0.4f, 1.0f)) * distance, target, vec3(0, 1, 0),
+                               2.0f * glm::degrees(std::atan(3.5f / distance))};
+        check_exact_structures(s, 40, 30);
+    }
+}
+
+TEST_CASE("ch16 exactness: every exact structure equals brute force on a sphere far from the origin",
+          "[ch16][exactness]") {
+    // A tessellated unit sphere placed 10^5 and 10^6 times its size from the origin, seen from nearby.
+    for (const float offset : {1e5f, 1e6f}) {
+        triangle_mesh m = tessellated_sphere(24, 48);
+        const vec3 at(offset, 0.5f * offset, -0.25f * offset);
+        for (vec3& p : m.positions) p += at;
+        scene s = mesh_scene("far_sphere_" + std::to_string(int(offset)), m);
+        s.camera = camera_desc{at + vec3(0.5f, 0.8f, 3.0f), at, vec3(0, 1, 0), 45.0f};
+        check_exact_structures(s, 40, 30);
+    }
+}

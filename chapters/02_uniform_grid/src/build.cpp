@@ -6,6 +6,7 @@
 #include <atomic>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 namespace strahl::ch02 {
 
@@ -49,13 +50,50 @@ grid_dims choose_resolution(const aabb& scene_box, std::size_t n, const grid_opt
     return g;
 }
 
+namespace {
+// Boxes are padded a hair (far below a cell) so that a triangle touching a cell boundary is in the cells
+// on both sides, whatever the rounding in the DDA's walk.
+vec3 box_pad(const grid_dims& g) {
+    const vec3 ext = g.box.max - g.box.min;
+    return vec3(1e-5f * std::max({ext.x, ext.y, ext.z}));
+}
+}  // namespace
+
+std::uint64_t count_references(const grid_dims& g, std::span<const aabb> boxes) {
+    if (g.cell_count() == 0) return 0;
+    const vec3 pad = box_pad(g);
+    std::uint64_t n = 0;
+    for (const aabb& b : boxes) {
+        const cell_range cr = cells_of_box(g, aabb{b.min - pad, b.max + pad});
+        if (cr.hi.x < cr.lo.x || cr.hi.y < cr.lo.y || cr.hi.z < cr.lo.z) continue;
+        n += std::uint64_t(cr.hi.x - cr.lo.x + 1) * std::uint64_t(cr.hi.y - cr.lo.y + 1) *
+             std::uint64_t(cr.hi.z - cr.lo.z + 1);
+    }
+    return n;
+}
+
+grid_dims bounded_resolution(const aabb& scene_box, std::span<const aabb> boxes, const grid_options& opt,
+                             bool* lowered) {
+    if (opt.max_references >= (std::uint64_t(1) << 32))
+        throw std::length_error("grid: max_references must stay below 2^32 (the cells' offsets are 32 bits)");
+    if (lowered) *lowered = false;
+    grid_options o = opt;
+    for (;;) {
+        const grid_dims g = choose_resolution(scene_box, boxes.size(), o);
+        if (count_references(g, boxes) <= opt.max_references) return g;
+        if (g.res == ivec3(1))
+            throw std::length_error("grid: " + std::to_string(boxes.size()) + " primitives exceed the grid's " +
+                                    std::to_string(opt.max_references) + " references even in one cell");
+        if (lowered) *lowered = true;
+        o.lambda *= 0.5f;  // half the cells per primitive; the loop ends at one cell
+        o.max_res = std::max(1, std::min(o.max_res, std::max({g.res.x, g.res.y, g.res.z}) - 1));
+    }
+}
+
 grid_cells fill_cells(const grid_dims& g, std::span<const aabb> boxes, const overlap_test& keep) {
     grid_cells out;
     if (g.cell_count() == 0) return out;
-    // Boxes are padded a hair (far below a cell) so that a triangle touching a cell boundary is in the cells
-    // on both sides, whatever the rounding in the DDA's walk.
-    const vec3 ext = g.box.max - g.box.min;
-    const vec3 pad(1e-5f * std::max({ext.x, ext.y, ext.z}));
+    const vec3 pad = box_pad(g);
     const auto range_of = [&](std::size_t i) { return cells_of_box(g, aabb{boxes[i].min - pad, boxes[i].max + pad}); };
     const auto each_cell = [&](std::size_t i, auto&& f) {
         const cell_range cr = range_of(i);

@@ -16,11 +16,25 @@ struct grid_options {
     int max_res = 1024;            // cells per axis at most
     std::int64_t max_cells = 1 << 24;  // cells in all at most (16 M: 64 MB of offsets)
     bool exact_overlap = false;    // insert a triangle only into cells the triangle itself overlaps
+    // References (a primitive id in a cell) at most: 64 M, 256 MiB of ids. Triangles whose boxes span many
+    // cells (long thin ones, or thousands stacked in one place) would otherwise make the grid grow with the
+    // square of their number; the resolution is lowered until their cell ranges hold no more than this.
+    std::uint64_t max_references = std::uint64_t(1) << 26;
 };
 
 // The resolution heuristic: n_axis = extent_axis * cbrt(lambda N / volume), clamped to [1, max_res].
 // Axes of zero extent are widened first (a flat scene gets one cell, of non-zero size, on that axis).
 grid_dims choose_resolution(const aabb& scene_box, std::size_t n, const grid_options& opt);
+
+// The references fill_cells would make at resolution g (before any exact overlap test): the sum over the
+// boxes of the cells each box's range covers, in 64 bits. O(N), no cell is visited.
+std::uint64_t count_references(const grid_dims& g, std::span<const aabb> boxes);
+
+// choose_resolution, then, while the references would exceed opt.max_references, the same heuristic with
+// half the cells per primitive (down to one cell). Sets *lowered when it had to. Throws std::length_error
+// when even one cell would hold more (more primitives than max_references), or max_references >= 2^32.
+grid_dims bounded_resolution(const aabb& scene_box, std::span<const aabb> boxes, const grid_options& opt,
+                             bool* lowered = nullptr);
 
 // The cells: prims[offsets[c] .. offsets[c+1]) are the primitives of cell c. One index array, no vector
 // per cell: built in two passes (count, prefix sum, fill).

@@ -60,13 +60,15 @@ public:
         std::vector<aabb> boxes(set.size());
         aabb scene_box;
         for (std::size_t i = 0; i < boxes.size(); ++i) scene_box.grow(boxes[i] = set.bounds(i));
-        dims_ = choose_resolution(scene_box, boxes.size(), opt);
+        dims_ = bounded_resolution(scene_box, boxes, opt, &lowered_);
         cells_ = fill_cells(dims_, boxes, opt.exact_overlap ? keep : overlap_test{});
         prim_count_ = boxes.size();
         id_ = next_grid_id();
     }
 
     const grid_dims& dims() const { return dims_; }
+    // Whether the build lowered the heuristic's resolution to keep within opt.max_references.
+    bool resolution_lowered() const { return lowered_; }
     const grid_cells& cells() const { return cells_; }
     std::size_t memory_bytes() const {
         return sizeof(*this) + (cells_.offsets.size() + cells_.prims.size()) * sizeof(std::uint32_t);
@@ -138,6 +140,7 @@ private:
     grid_cells cells_;
     std::size_t prim_count_ = 0;
     std::uint64_t id_ = 0;
+    bool lowered_ = false;
 };
 
 }  // namespace strahl::ch02
