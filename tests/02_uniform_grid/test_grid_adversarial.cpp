@@ -233,7 +233,7 @@ TEST_CASE("ch02 grid: triangles spanning the scene stay within the reference bud
     CHECK(g2.cells().prims.size() <= opt.max_references);
 }
 
-TEST_CASE("ch02 grid: 200,000 copies of one triangle build within the budget; a budget below the count is refused",
+TEST_CASE("ch02 grid: 200,000 copies of one triangle build within the budget, a budget below their count is refused",
           "[ch02][adversarial]") {
     triangle_mesh m;
     m.positions = {vec3(0), vec3(1, 0, 0), vec3(0, 1, 0)};

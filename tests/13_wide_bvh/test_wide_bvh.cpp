@@ -7,6 +7,8 @@
 #include "bvh_rays.hpp"
 #include "exactness.hpp"
 #include "hand_tree.hpp"
+#include "slab_cases.hpp"
+#include "strahl/ch13/wide_traverse.hpp"
 #include "test_support.hpp"
 #include <catch2/catch.hpp>
 #include <algorithm>
@@ -172,4 +174,38 @@ TEST_CASE("ch13 wide BVH: equals brute force on a scene far from the origin", "[
     triangle_mesh far = teapot_scene(3).mesh;
     for (vec3& p : far.positions) p += vec3(3e4f, -1e5f, 2e4f);
     check_exact(mesh_only(far), 300);
+}
+
+TEST_CASE("ch13 wide BVH: the walk's float set-up of the fast test misses no box, near and far from the origin",
+          "[ch13][adversarial]") {
+    // The walk sets the fast test up in float from the ray and the tree's box (wide_traverse.hpp), not through
+    // chapter 05's fast_slab::make in double: every lane must still meet each box the exact ray meets, and no
+    // later than exactly (the long-double test of tests/05_sah, on a node holding the box in one slot).
+    const auto float_setup = [](float widen) {
+        return [widen](const ch04::bvh_node& b, const ray& r, float lo, float hi) -> std::optional<float> {
+            wide_node<8> n{};
+            for (int a = 0; a < 3; ++a)
+                for (int k = 0; k < 8; ++k) n.lo[a][k] = k == 3 ? b.bmin[a] : inf, n.hi[a][k] = k == 3 ? b.bmax[a] : -inf;
+            bool ok = false;
+            const wide_fast_slab<8> s(r, b.box(), ok, widen);
+            if (!ok) return std::nullopt;
+            simd::vmask<8> hit;
+            alignas(32) float t[8];
+            node_entry_out_of_line(n, s, lo, hi, hit).store(t);
+            return (simd::movemask(hit) >> 3 & 1) ? t[3] : inf;
+        };
+    };
+    int lost_without_widening = 0;
+    for (const float offset : {0.0f, 1.0f, 1e3f, 1e5f, 1e7f})
+        for (const float size : {1e-3f, 1.0f, 1e3f}) {
+            const auto cases = test::grazing_cases(offset, size, 23, 3000);
+            INFO("box of size " << size << " at " << offset << " from the origin");
+            const test::tally t = test::check_against_exact(cases, float_setup(0x1p-19f));
+            if (size >= offset * 0x1p-16f) CHECK(t.tested > 800);
+            CHECK(t.missed == 0);
+            CHECK(t.late == 0);
+            const test::tally bare = test::check_against_exact(cases, float_setup(0.0f));
+            lost_without_widening += bare.missed + bare.late;
+        }
+    CHECK(lost_without_widening > 0);  // the widening is what the checks above test
 }

@@ -19,9 +19,9 @@ namespace strahl::ch13 {
 // wide_bvh::diagonal) in place of its own. A larger slack only widens the box tests: never a box lost.
 template <int N, int M>
 [[gnu::always_inline]] inline float wide_ray_slack(const ray& r, const wide_bvh<N, M>& tree) {
-    const vec3 to = glm::abs(r.org - tree.centre), d = glm::abs(r.dir);
-    const float reach = (to.x + to.y + to.z) + tree.diagonal;
-    const float len = std::max(d.x, std::max(d.y, d.z));
+    const vec3 to = r.org - tree.centre;
+    const float reach = (std::fabs(to.x) + std::fabs(to.y) + std::fabs(to.z)) + tree.diagonal;
+    const float len = std::max(std::fabs(r.dir.x), std::max(std::fabs(r.dir.y), std::fabs(r.dir.z)));
     return (reach * 0x1p-16f + 1e-5f * tree.diagonal) / len * (1.0f + 0x1p-20f);
 }
 
@@ -52,6 +52,22 @@ struct wide_fast_slab : plane_rows<N> {
     vf inv[3], org_near[3], org_far[3];
     explicit wide_fast_slab(const ray& r, const ch05::fast_slab& s) : plane_rows<N>(r.dir) {
         for (int a = 0; a < 3; ++a) inv[a] = vf(s.inv_dir[a]), org_near[a] = vf(s.org_near[a]), org_far[a] = vf(s.org_far[a]);
+    }
+    // The walk's per-ray set-up: ch05::fast_slab::make's terms computed in float, with twice its widening
+    // (eps = 2^-19 (p + |o|), 32 units of rounding where chapter 05's proof needs 16 and the float
+    // arithmetic here adds at most 3 more), so no double conversion per ray; widen = 0 drops the bound (the
+    // tests show boxes are then lost). ok is false where make() would give nothing (a direction component zero, subnormal, or so small that a plane's t overflows).
+    wide_fast_slab(const ray& r, const aabb& bounds, bool& ok, float widen = 0x1p-19f) : plane_rows<N>(r.dir) {
+        ok = true;
+        for (int a = 0; a < 3; ++a) {
+            const float i = 1.0f / r.dir[a], o = r.org[a];
+            const float span = std::max(std::fabs(bounds.min[a]), std::fabs(bounds.max[a])) + std::fabs(o);
+            const float eps = widen * span, toward = std::copysign(eps, i), tiny = widen > 0.0f ? 0x1p-126f : 0.0f;
+            ok = ok && std::fabs(i) <= 0x1p100f && (span + eps) * std::fabs(i) <= 0x1p100f;
+            inv[a] = vf(i);
+            org_near[a] = vf((o + toward) * i + tiny);
+            org_far[a] = vf((o - toward) * i - tiny);
+        }
     }
     // A plane's t: plane * inv_dir - org_term, in one fused multiply-add or a multiply and a subtract.
     [[gnu::always_inline]] static vf plane_t(vf plane, vf inv_dir, vf org_term) {
@@ -191,8 +207,10 @@ template <visit_order Order, int N, int M, class Stats, class Leaf>
 [[gnu::flatten]] void wide_traverse(const wide_bvh<N, M>& tree, ray& r, Stats& stats, Leaf&& leaf) {
     if (tree.nodes.empty() && !is_leaf(tree.root_ref)) return;
     const float slack = wide_ray_slack(r, tree);
-    if (const std::optional<ch05::fast_slab> s = ch05::fast_slab::make(r, tree.bounds))
-        wide_walk<Order>(tree, wide_fast_slab<N>(r, *s), slack, r, stats, leaf);
+    bool fast = false;
+    const wide_fast_slab<N> s(r, tree.bounds, fast);
+    if (fast)
+        wide_walk<Order>(tree, s, slack, r, stats, leaf);
     else
         wide_walk<Order>(tree, wide_robust_slab<N>(r), slack, r, stats, leaf);
 }
