@@ -6,6 +6,8 @@
 #include "strahl/scene.hpp"
 #include "test_support.hpp"
 #include <chrono>
+#include <cmath>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 
@@ -281,4 +283,295 @@ TEST_CASE("scene loader: frame_camera sees every corner of flat, long and empty 
     const camera_desc empty = frame_camera(aabb::empty());
     CHECK(is_finite(empty.eye));
     CHECK_NOTHROW(camera(empty, 64, 64));
+}
+
+// ---- Hostile files (issue #20): each case below was loaded silently wrong, crashed or ran away before.
+
+namespace {
+
+std::string base64(const std::string& bytes) {
+    static const char digits[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string out;
+    for (std::size_t i = 0; i < bytes.size(); i += 3) {
+        std::uint32_t n = std::uint32_t(static_cast<unsigned char>(bytes[i])) << 16;
+        if (i + 1 < bytes.size()) n |= std::uint32_t(static_cast<unsigned char>(bytes[i + 1])) << 8;
+        if (i + 2 < bytes.size()) n |= std::uint32_t(static_cast<unsigned char>(bytes[i + 2]));
+        out += digits[(n >> 18) & 63];
+        out += digits[(n >> 12) & 63];
+        out += i + 1 < bytes.size() ? digits[(n >> 6) & 63] : '=';
+        out += i + 2 < bytes.size() ? digits[n & 63] : '=';
+    }
+    return out;
+}
+
+template <class T> void append_raw(std::string& out, const T& value) {
+    out.append(reinterpret_cast<const char*>(&value), sizeof value);
+}
+
+// The binary buffer of a glTF mesh: float positions, then unsigned short indices.
+std::string gltf_buffer(const std::vector<vec3>& positions, const std::vector<std::uint16_t>& indices) {
+    std::string bin;
+    for (const vec3& p : positions) { append_raw(bin, p.x); append_raw(bin, p.y); append_raw(bin, p.z); }
+    for (const std::uint16_t i : indices) append_raw(bin, i);
+    while (bin.size() % 4 != 0) bin += '\0';
+    return bin;
+}
+
+// The JSON of a one-mesh glTF whose buffer (positions, then indices) is `uri` (empty: a GLB's own chunk),
+// with the given "nodes" array and scene roots.
+std::string gltf_json(std::size_t vertices, std::size_t indices, std::size_t buffer_bytes, const std::string& uri,
+                      const std::string& nodes = R"([{"mesh":0}])", const std::string& roots = "[0]") {
+    const std::size_t position_bytes = 12 * vertices;
+    return R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":)" + roots + R"(}],"nodes":)" + nodes +
+           R"(,"meshes":[{"primitives":[{"attributes":{"POSITION":0},"indices":1}]}],"buffers":[{"byteLength":)" +
+           std::to_string(buffer_bytes) + (uri.empty() ? "" : R"(,"uri":")" + uri + "\"") +
+           R"(}],"bufferViews":[{"buffer":0,"byteOffset":0,"byteLength":)" + std::to_string(position_bytes) +
+           R"(},{"buffer":0,"byteOffset":)" + std::to_string(position_bytes) + R"(,"byteLength":)" +
+           std::to_string(2 * indices) + R"(}],"accessors":[{"bufferView":0,"componentType":5126,"count":)" +
+           std::to_string(vertices) + R"(,"type":"VEC3","min":[-1e9,-1e9,-1e9],"max":[1e9,1e9,1e9]},)" +
+           R"({"bufferView":1,"componentType":5123,"count":)" + std::to_string(indices) + R"(,"type":"SCALAR"}]})";
+}
+
+std::string gltf_text(const std::vector<vec3>& positions, const std::vector<std::uint16_t>& indices,
+                      const std::string& nodes = R"([{"mesh":0}])") {
+    const std::string bin = gltf_buffer(positions, indices);
+    return gltf_json(positions.size(), indices.size(), bin.size(),
+                     "data:application/octet-stream;base64," + base64(bin), nodes);
+}
+
+// A binary glTF: 12-byte header, a JSON chunk padded with spaces, a BIN chunk padded with zeros.
+std::string glb(const std::vector<vec3>& positions, const std::vector<std::uint16_t>& indices) {
+    const std::string bin = gltf_buffer(positions, indices);
+    std::string json = gltf_json(positions.size(), indices.size(), bin.size(), "");
+    while (json.size() % 4 != 0) json += ' ';
+    std::string out = "glTF";
+    append_raw(out, std::uint32_t(2));
+    append_raw(out, std::uint32_t(12 + 8 + json.size() + 8 + bin.size()));
+    append_raw(out, std::uint32_t(json.size()));
+    append_raw(out, std::uint32_t(0x4E4F534A));  // "JSON"
+    out += json;
+    append_raw(out, std::uint32_t(bin.size()));
+    append_raw(out, std::uint32_t(0x004E4942));  // "BIN\0"
+    out += bin;
+    return out;
+}
+
+const std::vector<vec3> unit_quad = {vec3(0, 0, 0), vec3(1, 0, 0), vec3(1, 1, 0), vec3(0, 1, 0)};
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+TEST_CASE("scene loader: PLY triangle strips are read, restarting at -1 with alternating winding", "[common][scene]") {
+    const auto dir = test::scratch_dir("scene_loader_tristrips");
+    // Two strips in one list: 0 1 2 3 and, after the restart, 2 3 4 5. Every triangle faces -z.
+    const std::string header = "ply\nformat ascii 1.0\nelement vertex 6\nproperty float x\nproperty float y\n"
+                               "property float z\nelement tristrips 1\nproperty list int int vertex_indices\n"
+                               "end_header\n";
+    const std::string points = "0 0 0\n0 1 0\n1 0 0\n1 1 0\n2 0 0\n2 1 0\n";
+    std::ostringstream log;
+    const triangle_mesh m = load_mesh(write_file(dir, "strips.ply", header + points + "9 0 1 2 3 -1 2 3 4 5\n"), &log);
+    REQUIRE(m.triangle_count() == 4);
+    const vec3 p[6] = {vec3(0, 0, 0), vec3(0, 1, 0), vec3(1, 0, 0), vec3(1, 1, 0), vec3(2, 0, 0), vec3(2, 1, 0)};
+    using tri = std::array<vec3, 3>;
+    CHECK(m.triangle(0) == tri{p[0], p[1], p[2]});
+    CHECK(m.triangle(1) == tri{p[2], p[1], p[3]});  // odd triangles swap their first two corners
+    CHECK(m.triangle(2) == tri{p[2], p[3], p[4]});  // the restart begins a fresh strip: even again
+    CHECK(m.triangle(3) == tri{p[4], p[3], p[5]});
+    for (std::size_t i = 0; i < m.triangle_count(); ++i) {
+        const tri t = m.triangle(i);
+        CHECK(glm::cross(t[1] - t[0], t[2] - t[0]).z < 0.0f);
+    }
+    CHECK(log.str() == "strips.ply: 4 triangles, 6 vertices\n");
+
+    // The same strips in a binary file, big endian, with a uchar-counted list.
+    std::string binary = "ply\nformat binary_big_endian 1.0\nelement vertex 6\nproperty float x\nproperty float y\n"
+                         "property float z\nelement tristrips 1\nproperty list uchar int vertex_indices\nend_header\n";
+    const auto big_endian = [&](std::uint32_t bits) {
+        for (int shift = 24; shift >= 0; shift -= 8) binary += char((bits >> shift) & 0xFF);
+    };
+    for (const vec3& q : p)
+        for (int k = 0; k < 3; ++k) { std::uint32_t bits; std::memcpy(&bits, &q[k], 4); big_endian(bits); }
+    binary += char(9);
+    for (const int i : {0, 1, 2, 3, -1, 2, 3, 4, 5}) big_endian(std::uint32_t(i));
+    const triangle_mesh b = load_mesh(write_file(dir, "strips_binary.ply", binary));
+    REQUIRE(b.triangle_count() == 4);
+    for (std::size_t i = 0; i < 4; ++i) CHECK(b.triangle(i) == m.triangle(i));
+
+    // A strip index past the last vertex is refused like a face's.
+    REQUIRE_THROWS_WITH(load_mesh(write_file(dir, "strip_index.ply", header + points + "4 0 1 2 6\n")),
+                        Contains("strip_index.ply") && Contains("out of range"));
+}
+
+TEST_CASE("scene loader: a PLY without x, y or z vertex properties is refused, naming the property", "[common][scene]") {
+    const auto dir = test::scratch_dir("scene_loader_ply_xyz");
+    const std::string no_z = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                             "element face 1\nproperty list uchar int vertex_indices\nend_header\n"
+                             "0 0\n1 0\n0 1\n3 0 1 2\n";
+    REQUIRE_THROWS_WITH(load_mesh(write_file(dir, "no_z.ply", no_z)), Contains("no_z.ply") && Contains("'z'"));
+    const std::string no_x = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float y\nproperty float z\n"
+                             "property float w\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+                             "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+    REQUIRE_THROWS_WITH(load_mesh(write_file(dir, "no_x.ply", no_x)), Contains("'x'"));
+}
+
+TEST_CASE("scene loader: a glTF face with an out-of-range vertex index is refused, not dropped", "[common][scene]") {
+    const auto dir = test::scratch_dir("scene_loader_gltf_index");
+    CHECK(load_mesh(write_file(dir, "good.gltf", gltf_text(unit_quad, {0, 1, 2, 0, 2, 3}))).triangle_count() == 2);
+    REQUIRE_THROWS_WITH(load_mesh(write_file(dir, "bad_index.gltf", gltf_text(unit_quad, {0, 1, 2, 0, 2, 7}))),
+                        Contains("bad_index.gltf") && Contains("out of range"));
+    REQUIRE_THROWS_WITH(load_mesh(write_file(dir, "bad_index.glb", glb(unit_quad, {0, 1, 2, 0, 2, 7}))),
+                        Contains("bad_index.glb") && Contains("out of range"));
+}
+
+TEST_CASE("scene loader: whole numbers of 20 or more digits in OBJ are read right or refused, never read as 0",
+          "[common][scene]") {
+    const auto dir = test::scratch_dir("scene_loader_obj_digits");
+    const std::string rest = "v 0 1 0\nv 0 0 1\nf 1 2 3\n";
+    // Up to 19 digits and exponents are fine.
+    CHECK(load_mesh(write_file(dir, "e20.obj", "v 1e20 0 0\n" + rest)).bounds().max.x == 1e20f);
+    CHECK(load_mesh(write_file(dir, "digits19.obj", "v 1000000000000000000 0 0\n" + rest)).bounds().max.x == 1e18f);
+    // assimp's reader gives 0 for some (its integer overflows), a wrapped value for others (3e19 as 1.16e19).
+    const std::pair<const char*, float> numbers[] = {
+        {"100000000000000000000", 1e20f}, {"-30000000000000000000", -3e19f}, {"100000000000000000000.5", 1e20f}};
+    for (const auto& [number, value] : numbers) {
+        INFO(number);
+        try {
+            const triangle_mesh m = load_mesh(write_file(dir, "digits.obj", "v " + std::string(number) + " 0 0\n" + rest));
+            CHECK((m.bounds().min.x == value || m.bounds().max.x == value));  // read right
+        } catch (const load_error& e) {
+            CHECK_THAT(e.what(), Contains("digits.obj") && Contains("line 1"));  // or refused, naming the line
+        }
+    }
+}
+
+TEST_CASE("scene loader: distinct vertices are never merged, however close", "[common][scene]") {
+    const auto dir = test::scratch_dir("scene_loader_no_merge");
+    const float s = 1e-22f;
+    std::ostringstream log;
+    const triangle_mesh obj = load_mesh(write_file(dir, "tiny.obj", "v 0 0 0\nv 1e-22 0 0\nv 1e-22 1e-22 0\nv 0 1e-22 0\n"
+                                                                     "f 1 2 3 4\n"), &log);
+    CHECK(log.str() == "tiny.obj: 2 triangles, 4 vertices\n");
+    REQUIRE(obj.triangle_count() == 2);
+    CHECK(obj.triangle(0) == std::array<vec3, 3>{vec3(0, 0, 0), vec3(s, 0, 0), vec3(s, s, 0)});
+    const triangle_mesh ply = load_mesh(write_file(dir, "tiny.ply",
+        "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+        "element face 2\nproperty list uchar int vertex_indices\nend_header\n"
+        "0 0 0\n1e-22 0 0\n1e-22 1e-22 0\n0 1e-22 0\n3 0 1 2\n3 0 2 3\n"));
+    CHECK(ply.positions.size() == 4);
+    const triangle_mesh gltf = load_mesh(write_file(dir, "tiny.gltf",
+        gltf_text({vec3(0), vec3(s, 0, 0), vec3(s, s, 0), vec3(0, s, 0)}, {0, 1, 2, 0, 2, 3})));
+    CHECK(gltf.positions.size() == 4);
+    // Bit-identical corners are still welded: two faces sharing an edge give 4 vertices, not 6.
+    CHECK(load_mesh(write_file(dir, "shared.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 1 0 0\nf 1 2 3\nf 1 3 4\n"))
+              .positions.size() == 4);
+}
+
+TEST_CASE("scene loader: deeply nested and cyclic glTF node trees are refused before assimp reads them",
+          "[common][scene]") {
+    const auto dir = test::scratch_dir("scene_loader_gltf_depth");
+    const auto chain = [](int depth) {
+        std::string nodes = "[";
+        for (int i = 0; i < depth - 1; ++i) nodes += R"({"children":[)" + std::to_string(i + 1) + "]},";
+        return nodes + R"({"mesh":0}])";
+    };
+    CHECK(load_mesh(write_file(dir, "nested_100.gltf", gltf_text(unit_quad, {0, 1, 2, 0, 2, 3}, chain(100))))
+              .triangle_count() == 2);
+    REQUIRE_THROWS_WITH(load_mesh(write_file(dir, "nested.gltf", gltf_text(unit_quad, {0, 1, 2, 0, 2, 3}, chain(20000)))),
+                        Contains("nested.gltf") && Contains("20,000 levels"));
+    REQUIRE_THROWS_WITH(
+        load_mesh(write_file(dir, "cycle.gltf", gltf_text(unit_quad, {0, 1, 2}, R"([{"children":[1]},{"children":[0],"mesh":0}])"))),
+        Contains("cycle.gltf") && Contains("cycle"));
+    // JSON nested far deeper than any glTF needs: the check's own JSON reader stops at 1,000 levels.
+    const std::string deep_json = gltf_text(unit_quad, {0, 1, 2}).insert(1, R"("extras":)" + std::string(100000, '[') +
+                                                                            std::string(100000, ']') + ",");
+    REQUIRE_THROWS_WITH(load_mesh(write_file(dir, "deep_json.gltf", deep_json)),
+                        Contains("deep_json.gltf") && Contains("nested"));
+}
+
+TEST_CASE("scene loader: a small node translation is applied, not taken for the identity", "[common][scene]") {
+    // aiMatrix4x4::IsIdentity allows entries 0.01 off: a translation of 0.005 used to be dropped.
+    const auto dir = test::scratch_dir("scene_loader_small_transform");
+    const triangle_mesh m = load_mesh(write_file(dir, "nudged.gltf",
+        gltf_text(unit_quad, {0, 1, 2, 0, 2, 3}, R"([{"mesh":0,"translation":[0,0,0.005]}])")));
+    CHECK(m.bounds().min == vec3(0, 0, 0.005f));
+    CHECK(m.bounds().max == vec3(1, 1, 0.005f));
+}
+
+TEST_CASE("scene loader: a GLB whose lengths exceed the file is refused at once", "[common][scene]") {
+    const auto dir = test::scratch_dir("scene_loader_glb");
+    const std::string good = glb(unit_quad, {0, 1, 2, 0, 2, 3});
+    CHECK(load_mesh(write_file(dir, "good.glb", good)).triangle_count() == 2);
+    std::string huge_chunk = good;
+    huge_chunk.replace(12, 4, std::string(4, '\xFF'));  // the JSON chunk's length: 0xFFFFFFFF
+    const auto start = std::chrono::steady_clock::now();
+    REQUIRE_THROWS_WITH(load_mesh(write_file(dir, "huge_chunk.glb", huge_chunk)),
+                        Contains("huge_chunk.glb") && Contains("JSON chunk"));
+    CHECK(seconds_since(start) < 1.0);
+    std::string long_header = good;
+    long_header.replace(8, 4, std::string(4, '\x7F'));  // the header's total length
+    REQUIRE_THROWS_WITH(load_mesh(write_file(dir, "long_header.glb", long_header)), Contains("bytes"));
+    REQUIRE_THROWS_WITH(load_mesh(write_file(dir, "short.glb", good.substr(0, 10))), Contains("short.glb"));
+}
+
+TEST_CASE("scene loader: a 100,000-corner OBJ polygon is handled or refused within a second", "[common][scene]") {
+    const auto dir = test::scratch_dir("scene_loader_obj_polygon");
+    const auto polygon = [](int n) {
+        std::ostringstream text;
+        for (int k = 0; k < n; ++k) text << "v " << std::cos(2 * pi * k / n) << ' ' << std::sin(2 * pi * k / n) << " 0\n";
+        text << 'f';
+        for (int k = 1; k <= n; ++k) text << ' ' << k;
+        text << '\n';
+        return text.str();
+    };
+    CHECK(load_mesh(write_file(dir, "polygon_1000.obj", polygon(1000))).triangle_count() == 998);
+    const auto path = write_file(dir, "polygon.obj", polygon(100000));
+    const auto start = std::chrono::steady_clock::now();
+    std::size_t triangles = 0;
+    std::string error;
+    try {
+        triangles = load_mesh(path).triangle_count();
+    } catch (const load_error& e) {
+        error = e.what();
+    }
+    CHECK(seconds_since(start) < 1.0);
+    if (error.empty()) CHECK(triangles == 99998);  // handled
+    else CHECK_THAT(error, Contains("polygon.obj") && Contains("100,000 corners"));  // or refused
+}
+
+TEST_CASE("scene loader: malformed OBJ vertex lines say what is wrong, naming the line", "[common][scene]") {
+    const auto dir = test::scratch_dir("scene_loader_obj_vertex_lines");
+    const std::string rest = "v 0 1 0\nv 0 0 1\nf 1 2 3\n";
+    REQUIRE_THROWS_WITH(load_mesh(write_file(dir, "two.obj", "v 0 0\n" + rest)),
+                        Contains("two.obj") && Contains("line 1") && Contains("three numbers"));
+    REQUIRE_THROWS_WITH(load_mesh(write_file(dir, "letters.obj", rest + "v a b c\n")),
+                        Contains("letters.obj") && Contains("line 4") && Contains("'a' is not a number"));
+    REQUIRE_THROWS_WITH(load_mesh(write_file(dir, "five.obj", "v 1 2 3 4 5\n" + rest)), Contains("line 1"));
+    // Valid forms: x y z, x y z w, x y z r g b, a comment after the numbers.
+    CHECK(load_mesh(write_file(dir, "forms.obj", "v 0 0 0 1\nv 1 0 0 0.5 0.5 0.5\nv 0 1 0 # corner\nf 1 2 3\n"))
+              .triangle_count() == 1);
+}
+
+TEST_CASE("scene loader: a mesh below float resolution at its distance from the origin is loaded with a warning",
+          "[common][scene]") {
+    const auto dir = test::scratch_dir("scene_loader_float_resolution");
+    // An octahedron of radius 1e-3 centred at (1e7, 1e7, 1e7), where floats are 1 apart: every corner rounds
+    // to one point, and every triangle is degenerate.
+    std::string far;
+    for (const char* corner : {"10000000.001 10000000 10000000", "9999999.999 10000000 10000000",
+                               "10000000 10000000.001 10000000", "10000000 9999999.999 10000000",
+                               "10000000 10000000 10000000.001", "10000000 10000000 9999999.999"})
+        far += "v " + std::string(corner) + "\n";
+    far += "f 1 3 5\nf 3 2 5\nf 2 4 5\nf 4 1 5\nf 3 1 6\nf 2 3 6\nf 4 2 6\nf 1 4 6\n";
+    std::ostringstream log;
+    const scene s = load_scene(write_file(dir, "far.obj", far), &log);
+    CHECK(s.mesh.triangle_count() == 8);
+    CHECK_THAT(log.str(), Contains("warning") && Contains("far.obj") && Contains("float"));
+    // A mesh 2,000 across at the same distance is well within float resolution: no warning.
+    std::ostringstream quiet;
+    load_scene(write_file(dir, "near.obj", "v 10001000 0 0\nv 9999000 0 0\nv 10000000 1000 0\nv 10000000 0 1000\n"
+                                           "f 1 3 4\nf 3 2 4\n"), &quiet);
+    CHECK(quiet.str() == "near.obj: 2 triangles, 4 vertices\n");
 }

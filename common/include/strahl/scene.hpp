@@ -81,20 +81,30 @@ public:
     using std::runtime_error::runtime_error;
 };
 
-// Loads OBJ, PLY, glTF (and whatever else assimp reads) as one triangle mesh. Polygons are triangulated;
-// meshes are concatenated in assimp's node order, each mesh's faces in file order. Throws load_error.
-// Where log is given, prints one line: file, triangles, vertices.
+// Loads OBJ, PLY, glTF (and whatever else assimp reads) as one triangle mesh. PLY is read by the course's
+// own reader, everything else by assimp. Polygons are triangulated; meshes are concatenated in node order,
+// each mesh's faces in file order. Throws load_error. Where log is given, prints one line: file, triangles,
+// vertices; and a warning line when the mesh is below float32 resolution at its distance from the origin
+// (its largest side under 2^-20 of its largest coordinate: its corners have collapsed; loaded all the same).
 //
 // Triangle order (the primitive ids): the node tree is walked depth first from the root; a node's own
 // meshes come in its mesh-list order before its children, each with the node's accumulated transform (a
 // mesh used by two nodes appears twice). Within a mesh, faces come in file order; a polygon of n corners
-// becomes n - 2 triangles in place (assimp's aiProcess_Triangulate: a quad a b c d gives a b c, a c d).
-// For OBJ every object/group (and material change) is one mesh, in file order under the root; a PLY is one
-// mesh. Points and lines are skipped. Vertices: identical vertices within a mesh are welded
-// (aiProcess_JoinIdenticalVertices), unreferenced ones dropped, numbered in order of first use.
+// becomes n - 2 triangles in place (assimp's aiProcess_Triangulate: a quad a b c d gives a b c, a c d
+// unless b, c or d is a concave corner, where the fan then starts). For OBJ every object/group (and
+// material change) is one mesh, in file order under the root. A PLY is one mesh: its faces and triangle
+// strips (element tristrips; -1 restarts a strip, every other triangle swaps its first two corners so that
+// all face one way, triangles repeating a corner are kept as the strip says) in file order; its polygons of
+// five or more corners become a fan from their first corner. Points and lines are skipped. Vertices: corners
+// with equal positions (and, for files read by assimp, equal normals, texture coordinates and colours)
+// within a mesh are welded, never corners that merely lie close; unreferenced ones are dropped; numbered in
+// order of first use.
 // Errors: missing file, a directory, an empty file, a truncated PLY (more vertices or faces declared than
-// present), indices out of range (OBJ: zero, negative before any vertex, beyond the last vertex), NaN or
-// Inf in a referenced vertex, a file assimp cannot read, and a file with no triangles.
+// present), a PLY vertex without x, y or z, indices out of range (every format: OBJ zero, negative before
+// any vertex, beyond the last vertex; a glTF face assimp would drop), NaN or Inf in a referenced vertex, an
+// OBJ vertex line without three numbers or with a whole number of more than 64 bits, a polygon of more
+// than 1,000 corners, a glTF whose nodes nest more than 1,000 deep or form a cycle, a GLB whose lengths
+// exceed the file, a file assimp cannot read, and a file with no triangles.
 triangle_mesh load_mesh(const std::filesystem::path& file, std::ostream* log = nullptr);
 
 // load_mesh plus what a render needs: one diffuse material, a camera framing the mesh from the front
