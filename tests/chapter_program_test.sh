@@ -58,6 +58,55 @@ contains "$dir/out" "--out" "--help"
 runs "unknown option" 2 "$program" --no-such-option
 contains "$dir/err" "unknown option --no-such-option" "unknown option"
 
+# Chapters 01 to 06: a bad command line is refused before anything is created; --help states the largest
+# image and thread count; an image too large for the machine's memory is refused at once, saying how much it
+# needs (STRAHL_MEMORY_LIMIT_MB stands for a small machine); --threads beyond 1024 is refused.
+case $nn in
+01 | 03 | 04) max_side=16384 ;;
+02) max_side=8192 ;;
+05 | 06) max_side=4096 ;;
+*) max_side= ;;
+esac
+if [[ -n $max_side ]]; then
+    runs "bad command line" 2 "$program" --quick --width 0 --out "$dir/never/"
+    [[ ! -e $dir/never ]] || fail "bad command line: --out $dir/never was created before the refusal"
+    runs "--help" 0 "$program" --help
+    contains "$dir/out" "$max_side" "--help states the largest image"
+    has_threads=$(grep -c -- "--threads" "$dir/out" || true)
+    [[ $has_threads -eq 0 ]] || contains "$dir/out" "0..1024" "--help states the thread limit"
+    export STRAHL_MEMORY_LIMIT_MB=16
+    runs "an image too large for memory" 1 "$program" --width "$max_side" --out "$dir/never/"
+    contains "$dir/err" "of memory needed, but only 16 MiB available" "an image too large for memory"
+    [[ ! -e $dir/never ]] || fail "an image too large for memory: --out $dir/never was created"
+    unset STRAHL_MEMORY_LIMIT_MB
+    if [[ $has_threads -ne 0 ]]; then
+        runs "--threads 2147483647" 2 "$program" --quick --threads 2147483647 --out "$dir/never/"
+        contains "$dir/err" "--threads must lie in [0, 1024]" "--threads 2147483647"
+        [[ ! -e $dir/never ]] || fail "--threads 2147483647: --out $dir/never was created"
+    fi
+fi
+
+# Chapter 01 writes one image to a file named with --out: not through a link to nothing, and a read-only
+# file is refused before the render (checked as a user other than root, who may write it anyway).
+if [[ $nn == 01 ]]; then
+    ln -s "$dir/link_target.png" "$dir/dangling.png"
+    runs "--out a dangling link" 1 "$program" --quick --scene teapot --width 16 --out "$dir/dangling.png" --force
+    contains "$dir/err" "which does not exist; not writing through it" "--out a dangling link"
+    [[ ! -e $dir/link_target.png ]] || fail "--out a dangling link: written through it"
+    as_user=()
+    [[ $(id -u) -ne 0 ]] || as_user=(setpriv --reuid=65534 --regid=65534 --clear-groups)
+    if [[ $(id -u) -ne 0 ]] || command -v setpriv >/dev/null; then
+        mkdir -p "$dir/read_only" && chmod 777 "$dir/read_only"
+        echo x >"$dir/read_only/teapot.png" && chmod 444 "$dir/read_only/teapot.png"
+        rc=0
+        "${as_user[@]}" "$program" --quick --scene teapot --width 16 --out "$dir/read_only/teapot.png" --force \
+            >"$dir/out" 2>"$dir/err" || rc=$?
+        [[ $rc -eq 1 ]] || fail "read-only --out with --force: exit $rc, expected 1"
+        contains "$dir/err" "cannot replace" "read-only --out with --force"
+        ! grep -q "Mrays/s" "$dir/out" || fail "read-only --out with --force: rendered before refusing"
+    fi
+fi
+
 # The quick run writes every promised file.
 runs "quick run" 0 "$program" "${args[@]}"
 for f in "${files[@]}"; do
@@ -109,6 +158,12 @@ if [[ $nn == 05 || $nn == 06 ]]; then
     { head -n 1 "$out/$table"; head -n 2 "$out/$table" | tail -n 1 | sed 's/,[^,]*$/,nan/'; } >"$dir/nan.csv"
     runs "--replot of a NaN" 1 "$program" --replot "$dir/nan.csv" --out "$dir/replot3"
     contains "$dir/err" "line 2: 'nan' is not a number" "--replot of a NaN"
+    # A subnormal is a number; one beyond double's range is out of range, not "not a number".
+    { head -n 1 "$out/$table"; head -n 2 "$out/$table" | tail -n 1 | sed 's/,[^,]*$/,4e-320/'; } >"$dir/tiny.csv"
+    runs "--replot of a subnormal" 0 "$program" --replot "$dir/tiny.csv" --out "$dir/replot5"
+    { head -n 1 "$out/$table"; head -n 2 "$out/$table" | tail -n 1 | sed 's/,[^,]*$/,1e999/'; } >"$dir/huge.csv"
+    runs "--replot of 1e999" 1 "$program" --replot "$dir/huge.csv" --out "$dir/replot6"
+    contains "$dir/err" "line 2: '1e999' is out of range" "--replot of 1e999"
     if [[ $nn == 06 ]]; then
         { head -n 1 "$out/$table"; head -n 2 "$out/$table" | tail -n 1 | sed 's/^[^,]*,/..\/escape,/'; } >"$dir/path.csv"
         runs "--replot of a scene named like a path" 1 "$program" --replot "$dir/path.csv" --out "$dir/replot4"

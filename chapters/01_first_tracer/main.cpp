@@ -67,10 +67,17 @@ output_plan plan_output(const cli& args, std::size_t images) {
     return plan;
 }
 
+// The ray heat map's file beside an image's: NAME_rays.png.
+fs::path heat_path_for(const fs::path& image) {
+    fs::path heat = image;
+    heat.replace_filename(image.stem().string() + "_rays" + image.extension().string());
+    return heat;
+}
+
 void render_job(const job& j, const cli& args, const output_plan& plan) {
     world_counts n;
     const world w = build_world(j.s, args.get_int("glossy-samples"), &n);
-    const camera cam(j.s.camera, j.width, j.height);
+    const camera cam = scene_camera(j.s, j.width, j.height);
     const fs::path path = plan.path_for(j.name);
     prepare_output(path, plan.user_named, args.has("force"));  // refuse before spending the time
     render_settings settings;
@@ -80,8 +87,7 @@ void render_job(const job& j, const cli& args, const output_plan& plan) {
     const render_result r = render(w, cam, settings);
     write_image(path, r.img);
     // Where the rays went: a heat map of log2(rays per pixel) beside the image (rough mirrors light up).
-    fs::path heat_path = path;
-    heat_path.replace_filename(path.stem().string() + "_rays" + path.extension().string());
+    const fs::path heat_path = heat_path_for(path);
     prepare_output(heat_path, plan.user_named, args.has("force"));
     std::vector<float> log_rays(r.rays_per_pixel.size());
     std::transform(r.rays_per_pixel.begin(), r.rays_per_pixel.end(), log_rays.begin(),
@@ -165,12 +171,13 @@ int run(int argc, const char* const* argv) {
              "tracing of the Cornell box and the teapot, with rays by kind, Mrays/s and tests per ray.");
     args.option("scene", "NAME", "all", "cornell, teapot or all")
         .option("mesh", "FILE", "", "render a mesh file of your own instead (OBJ, PLY, ...): brute force, slow")
-        .option("width", "N", "", "image width (default 512 for cornell and teapot, 256 with --quick)")
-        .option("height", "N", "", "image height (default: as wide for cornell, 3/4 of it otherwise)")
+        .option("width", "N", "", "image width, 1..16384 (default 512 for cornell and teapot, 256 with --quick; "
+                                  "16384 x 16384 needs about 10 GB of memory: refused where the machine has less)")
+        .option("height", "N", "", "image height, 1..16384 (default: as wide for cornell, 3/4 of it otherwise)")
         .option("teapot-res", "N", "", "teapot patches tessellated N x N: 64 N^2 triangles (default 6, 4 quick)")
         .option("depth", "N", "5", "Whitted recursion limit: reflection rays up to this depth")
         .option("glossy-samples", "S", "16", "reflection rays per rough-mirror hit")
-        .option("threads", "N", "0", "worker threads (0: one per core)")
+        .option("threads", "N", "0", "worker threads, 0..1024 (0: one per core)")
         .option("seed", "N", "1", "random seed of the rough-mirror samples")
         .option("out", "FILE|DIR", "", "write the image to FILE (and its ray heat map to FILE_rays.png), or the images into DIR/ "
                 "(default out/01_first_tracer/)")
@@ -180,10 +187,9 @@ int run(int argc, const char* const* argv) {
     if (!args.parse(argc, argv)) return 0;
 
     const bool quick = args.has("quick");
-    const int depth = args.get_int("depth"), glossy = args.get_int("glossy-samples"), threads = args.get_int("threads");
+    const int depth = args.get_int("depth"), glossy = args.get_int("glossy-samples"), threads = read_threads(args, 0);
     if (depth < 0 || depth > 64) throw usage_error("--depth must lie in [0, 64]");
     if (glossy < 1 || glossy > 4096) throw usage_error("--glossy-samples must lie in [1, 4096]");
-    if (threads < 0) throw usage_error("--threads must be 0 (all cores) or more");
     const thread_limit limit(threads);
 
     const auto size_option = [&](const char* name, int fallback) {
@@ -219,6 +225,15 @@ int run(int argc, const char* const* argv) {
             jobs.push_back({"teapot", teapot_scene(teapot_res), width, size_option("height", width * 3 / 4)});
     }
     const output_plan plan = plan_output(args, jobs.size());
+    // Before any work: the memory of the largest image (per pixel: its colour, its rays, their log, the
+    // heat map, the PNG rows; 40 bytes is ample), and every file this run writes.
+    for (const job& j : jobs)
+        check_memory(std::uint64_t(j.width) * std::uint64_t(j.height) * 40,
+                     "a " + std::to_string(j.width) + " x " + std::to_string(j.height) + " image");
+    for (const job& j : jobs) {
+        prepare_output(plan.path_for(j.name), plan.user_named, args.has("force"));
+        prepare_output(heat_path_for(plan.path_for(j.name)), plan.user_named, args.has("force"));
+    }
     for (const job& j : jobs) render_job(j, args, plan);
     return 0;
 }

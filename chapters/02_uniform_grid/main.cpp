@@ -171,8 +171,8 @@ int run(int argc, const char* const* argv) {
              "lambda swept.");
     args.option("teapot-res", "N", "", "teapot patches tessellated N x N: 64 N^2 triangles (default 12, 6 quick)")
         .option("lambda", "L", "4", "cells per triangle")
-        .option("width", "N", "", "image width (default 512, 256 with --quick); height 3/4 of it")
-        .option("threads", "N", "0", "worker threads (0: one per core)")
+        .option("width", "N", "", "image width, 8..8192 (default 512, 256 with --quick); height 3/4 of it")
+        .option("threads", "N", "0", "worker threads, 0..1024 (0: one per core)")
         .option("out", "DIR", "", "write images, CSV and SVG into DIR/ (default out/02_uniform_grid/)")
         .flag("force", "replace existing files in a folder named with --out")
         .flag("quick", "smaller images and fewer runs, a few seconds (./course run)");
@@ -190,8 +190,10 @@ int run(int argc, const char* const* argv) {
     grid_options opt;
     opt.lambda = float(args.get_double("lambda"));
     if (!(opt.lambda > 0.0f && opt.lambda <= 1000.0f)) throw usage_error("--lambda must lie in (0, 1000]");
-    if (args.get_int("threads") < 0) throw usage_error("--threads must be 0 (all cores) or more");
-    const thread_limit limit(args.get_int("threads"));
+    const thread_limit limit(read_threads(args, 0));
+    // Per pixel: the primary rays and their hits, tests per ray, the images and heat maps: 120 bytes is ample.
+    check_memory(std::uint64_t(ctx.width) * std::uint64_t(ctx.height) * 120,
+                 "a " + std::to_string(ctx.width) + " x " + std::to_string(ctx.height) + " image");
 
     // Refuse before spending the time: every file this run writes.
     for (const char* f : {"teapot.png", "teapot_tests.png", "stadium.png", "stadium_tests.png", "histogram.svg",

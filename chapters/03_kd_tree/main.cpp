@@ -93,21 +93,23 @@ int run(int argc, const char* const* argv) {
              "virtual objects, primary rays through them, tree statistics and the split planes drawn.");
     args.option("scene", "NAME", "all", "teapot, stadium, bunny, sponza or all (all: teapot, stadium, bunny; "
                                         "Sponza only with --sponza)")
-        .option("width", "N", "", "image width (default 640, 320 with --quick)")
-        .option("height", "N", "", "image height (default 3/4 of the width)")
+        .option("width", "N", "", "image width, 1..16384 (default 640, 320 with --quick; 16384 x 16384 needs over "
+                                  "20 GB of memory: refused where the machine has less)")
+        .option("height", "N", "", "image height, 1..16384 (default 3/4 of the width)")
         .option("levels", "N", "4", "draw the split planes of this many levels")
-        .option("threads", "N", "0", "worker threads (0: one per core)")
+        .option("threads", "N", "0", "worker threads, 0..1024 (0: one per core)")
         .option("out", "DIR", "", "write the images into DIR/ (default out/03_kd_tree/)")
         .flag("force", "replace existing files in a folder named with --out")
         .flag("sponza", "with --scene all: also Sponza (262k triangles, a build of seconds)")
         .flag("quick", "smaller images and only the built-in scenes");
     if (!args.parse(argc, argv)) return 0;
     const bool quick = args.has("quick");
-    const int threads = args.get_int("threads");
-    if (threads < 0) throw usage_error("--threads must be 0 (all cores) or more");
+    const int threads = read_threads(args, 0);
     const thread_limit limit(threads);
     options o;
-    const image_size size = read_image_size(args, quick ? 320 : 640, 16384);
+    // Per pixel: a primary ray's hit and its counts (28 bytes), the rendered image, the heat map and its
+    // picture (12 bytes each), the PNG rows, and room for the structures: 80 bytes is ample.
+    const image_size size = read_image_size(args, quick ? 320 : 640, 16384, 80);
     o.width = size.width, o.height = size.height;
     o.levels = args.get_int("levels");
     if (o.levels < 0 || o.levels > 12) throw usage_error("--levels must lie in [0, 12]");

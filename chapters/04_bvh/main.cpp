@@ -97,20 +97,22 @@ int run(int argc, const char* const* argv) {
              "triangles and virtual objects, primary rays through them, tree statistics, and box tests per "
              "pixel as a heat map with the boxes of chosen levels drawn over it.");
     args.option("scene", "NAME", "all", "teapot, stadium, bunny or all (all: teapot, stadium, bunny)")
-        .option("width", "N", "", "image width (default 640, 320 with --quick)")
-        .option("height", "N", "", "image height (default 3/4 of the width)")
+        .option("width", "N", "", "image width, 1..16384 (default 640, 320 with --quick; 16384 x 16384 needs over "
+                                  "20 GB of memory: refused where the machine has less)")
+        .option("height", "N", "", "image height, 1..16384 (default 3/4 of the width)")
         .option("levels", "A-B", "2-3", "draw the boxes of the nodes at depths A to B (the root is depth 0)")
-        .option("threads", "N", "0", "worker threads (0: one per core)")
+        .option("threads", "N", "0", "worker threads, 0..1024 (0: one per core)")
         .option("out", "DIR", "", "write the images into DIR/ (default out/04_bvh/)")
         .flag("force", "replace existing files in a folder named with --out")
         .flag("quick", "smaller images and only the built-in scenes");
     if (!args.parse(argc, argv)) return 0;
     const bool quick = args.has("quick");
-    const int threads = args.get_int("threads");
-    if (threads < 0) throw usage_error("--threads must be 0 (all cores) or more");
+    const int threads = read_threads(args, 0);
     const thread_limit limit(threads);
     options o;
-    const image_size size = read_image_size(args, quick ? 320 : 640, 16384);
+    // Per pixel: a primary ray's hit and its counts (28 bytes), the rendered image, the heat map and its
+    // picture (12 bytes each), the PNG rows, and room for the structures: 80 bytes is ample.
+    const image_size size = read_image_size(args, quick ? 320 : 640, 16384, 80);
     o.width = size.width, o.height = size.height;
     const std::string levels = args.get("levels");
     char dash = 0, extra = 0;

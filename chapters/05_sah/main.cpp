@@ -210,8 +210,8 @@ int run(int argc, const char* const* argv) {
     args.option("scene", "NAME", "all", "stadium, bunny, sponza, teapot or all (all: stadium, bunny, sponza)")
         .option("bins", "LIST", "4,8,16,32,64,128,256", "comma-separated bin counts, each in [2, 256]")
         .option("costs", "CT,CI", "1,1", "the SAH's traversal and intersection costs")
-        .option("width", "N", "", "primary rays per row (default 192, 96 with --quick)")
-        .option("height", "N", "", "rows (default 3/4 of the width)")
+        .option("width", "N", "", "primary rays per row, 1..4096 (default 192, 96 with --quick)")
+        .option("height", "N", "", "rows, 1..4096 (default 3/4 of the width)")
         .option("repeats", "K", "3", "timed runs per measurement after a warm-up; the median is reported")
         .option("out", "DIR", "", "write the CSV file, the plots and the heat maps into DIR/ (default out/05_sah/)")
         .option("replot", "CSV", "", "only redraw the two plots from a bins.csv written earlier (no building, no tracing)")
@@ -224,16 +224,18 @@ int run(int argc, const char* const* argv) {
     o.force = args.has("force");
     const fs::path csv = o.folder / "bins.csv", trade = o.folder / "build_vs_trace.svg",
                    cost = o.folder / "bins_vs_sah.svg";
-    // Every file this run writes is checked before the work starts, not after it.
-    for (const fs::path& p : {trade, cost}) prepare_output(p, o.user_named, o.force);
     if (args.has("replot")) {
-        write_plots(read_table(args.get("replot")), trade, cost);
+        // The table read first: a file that is no bins.csv leaves no folder behind.
+        const scene_rows rows = read_table(args.get("replot"));
+        for (const fs::path& p : {trade, cost}) prepare_output(p, o.user_named, o.force);
+        write_plots(rows, trade, cost);
         std::printf("wrote %s, %s from %s\n", trade.string().c_str(), cost.string().c_str(), args.get("replot").c_str());
         return 0;
     }
-    prepare_output(csv, o.user_named, o.force);
-    const thread_limit one(1);  // the chapter's figures are single-threaded, as in the race's table
-    const image_size size = read_image_size(args, quick ? 96 : 192, 4096);
+    // Every option is checked before anything is created, and every file this run writes before the work
+    // starts, not after it. Per pixel: primary and diffuse rays with their hits, twice over (median and SAH
+    // trees), the heat maps and their PNG rows: 200 bytes is ample.
+    const image_size size = read_image_size(args, quick ? 96 : 192, 4096, 200);
     o.width = size.width, o.height = size.height;
     o.repeats = args.get_int("repeats");
     if (o.repeats < 1 || o.repeats > 100) throw usage_error("--repeats must lie in [1, 100]");
@@ -248,6 +250,8 @@ int run(int argc, const char* const* argv) {
     const std::string which = quick ? "stadium" : args.get("scene");
     if (which != "all" && which != "teapot" && which != "stadium" && which != "bunny" && which != "sponza")
         throw usage_error("--scene must be stadium, bunny, sponza, teapot or all, not '" + which + "'");
+    for (const fs::path& p : {csv, trade, cost}) prepare_output(p, o.user_named, o.force);
+    const thread_limit one(1);  // the chapter's figures are single-threaded, as in the race's table
     scene_rows all;
     if (which == "teapot") all.emplace_back("teapot", run_scene(builtin_scene("teapot"), "teapot", o));
     if (which == "all" || which == "stadium") all.emplace_back("stadium", run_scene(builtin_scene("teapot_stadium"), "stadium", o));

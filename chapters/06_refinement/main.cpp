@@ -190,8 +190,8 @@ int run(int argc, const char* const* argv) {
     args.option("scene", "NAME", "all", "stadium, bunny, sponza, teapot or all (all: stadium, bunny, sponza)")
         .option("rotations", "LIST", "1,2,4,8,64", "comma-separated budgets of rotation passes")
         .option("reinsertions", "LIST", "1,4,16,64,256", "comma-separated budgets of reinsertion batches")
-        .option("width", "N", "", "primary rays per row (default 192, 96 with --quick)")
-        .option("height", "N", "", "rows (default 3/4 of the width)")
+        .option("width", "N", "", "primary rays per row, 1..4096 (default 192, 96 with --quick)")
+        .option("height", "N", "", "rows, 1..4096 (default 3/4 of the width)")
         .option("repeats", "K", "3", "timed runs per measurement after a warm-up; the median is reported")
         .option("out", "DIR", "", "write the CSV file and the plots into DIR/ (default out/06_refinement/)")
         .option("replot", "CSV", "", "only redraw the plots from a refinement.csv written earlier (no refining, no tracing)")
@@ -211,7 +211,9 @@ int run(int argc, const char* const* argv) {
         return 0;
     }
     const thread_limit one(1);  // the chapter's figures are single-threaded, as in the race's table
-    const image_size size = read_image_size(args, quick ? 96 : 192, 4096);
+    // Per pixel: primary and diffuse rays with their hits for each tree measured, and the PNG rows: 200 bytes
+    // is ample.
+    const image_size size = read_image_size(args, quick ? 96 : 192, 4096, 200);
     o.width = size.width, o.height = size.height;
     o.repeats = args.get_int("repeats");
     if (o.repeats < 1 || o.repeats > 100) throw usage_error("--repeats must lie in [1, 100]");

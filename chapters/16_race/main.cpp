@@ -143,9 +143,10 @@ int run(int argc, const char* const* argv) {
                                       "scenes, plus ../shared/scenes meshes unless --quick)")
         .option("accels", "LIST", "", "comma-separated structures (default: all; see strahl-trace --list)")
         .option("rays", "LIST", "primary,diffuse,shadow", "ray sets")
-        .option("threads", "N", "1", "threads tracing (1: the single-thread table)")
-        .option("width", "W", "", "image width of the ray sets (default 192, quick 96)")
-        .option("height", "H", "", "image height (default 144, quick 72)")
+        .option("threads", "N", "1", "threads tracing, 1..1024 (1: the single-thread table)")
+        .option("width", "W", "", "image width of the ray sets, 4..8192 and divisible by 4 (default 192, quick 96; "
+                                  "8192 x 8192 needs over 13 GB of memory: refused where the machine has less)")
+        .option("height", "H", "", "image height, even, 2..8192 (default 144, quick 72)")
         .option("repeats", "K", "5", "timed runs after a warm-up; the median is reported")
         .option("budget", "S", "", "seconds one query may take before repeats stop, at least one run (default 4, quick 2)")
         .option("out", "DIR", "out/16_race", "where the tables, plots and images go; brute force's answers are "
@@ -163,25 +164,30 @@ int run(int argc, const char* const* argv) {
         .flag("quick", "built-in scenes only, 96x72 rays, 3 repeats: what ./course run runs");
     if (!args.parse(argc, argv)) return 0;
     const bool quick = args.has("quick");
-    const int threads = args.get_int("threads");
+    const int threads = read_threads(args, 1);
     const int w = args.has("width") ? args.get_int("width") : quick ? 96 : 192;
     const int h = args.has("height") ? args.get_int("height") : quick ? 72 : 144;
-    if (threads < 1 || w < 4 || h < 2 || w > 8192 || h > 8192 || w % 4 || h % 2)
-        throw usage_error("need --threads >= 1, a width in 4..8192 divisible by 4 and an even height in 2..8192");
+    if (w < 4 || h < 2 || w > 8192 || h > 8192 || w % 4 || h % 2)
+        throw usage_error("need a width in 4..8192 divisible by 4 and an even height in 2..8192");
     timing_rules rules;
     rules.repeats = args.has("repeats") ? args.get_int("repeats") : quick ? 3 : 5;
     rules.budget_s = args.has("budget") ? args.get_double("budget") : quick ? 2.0 : 4.0;
     rules.threads = threads;
     if (rules.repeats < 1 || rules.budget_s <= 0.0) throw usage_error("--repeats and --budget must be positive");
-    const std::filesystem::path out = args.get("out");
-    prepare_output(out / "race.csv", false, false);
-    const std::filesystem::path cache_dir = args.has("cache") ? std::filesystem::path(args.get("cache")) : out / "reference_cache";
-    const auto started = std::filesystem::file_time_type::clock::now();
     const double cache_limit_mb = args.get_double("cache-limit");
     if (!(cache_limit_mb >= 0.0)) throw usage_error("--cache-limit must be a number of megabytes >= 0");
     const int processes = args.get_int("processes");
     if (processes < (args.has("more") ? 0 : 1) || processes > 1000)
         throw usage_error("--processes must be in 1..1000 (0 with --more: combine the processes already there)");
+    // Per pixel of a scene: the primary rays and their answers, one further ray set with brute force's
+    // closest and any-hit answers and a structure's, the cache's read buffer and the image: under 200 bytes.
+    check_memory(std::uint64_t(w) * std::uint64_t(h) * 200,
+                 "the race's " + std::to_string(w) + " x " + std::to_string(h) + " ray sets");
+    // Only now, with the whole command line found good, anything is created.
+    const std::filesystem::path out = args.get("out");
+    prepare_output(out / "race.csv", false, false);
+    const std::filesystem::path cache_dir = args.has("cache") ? std::filesystem::path(args.get("cache")) : out / "reference_cache";
+    const auto started = std::filesystem::file_time_type::clock::now();
     if (processes > 1 || args.has("more"))
         return race_processes(processes, args.has("more"), args.has("reverse"), argc, argv, out, cache_dir);
 

@@ -19,6 +19,9 @@ namespace {
 // primitive"), an unoccluded one as a miss.
 constexpr std::uint32_t occluded_id = 0xFFFFFFFEu;
 
+// The largest --width and --height of generated rays.
+constexpr int max_side = 16384;
+
 int run(int argc, const char* const* argv) {
     cli args("strahl-trace",
              "Traces rays through one acceleration structure: --scene FILE|builtin:NAME --accel NAME\n"
@@ -29,19 +32,25 @@ int run(int argc, const char* const* argv) {
         .option("accel", "NAME", "brute", "the structure (see --list)")
         .option("rays", "FILE", "", "trace the rays of this file (STRAHLR1)")
         .option("gen", "KIND", "", "generate the rays instead: primary, diffuse or shadow")
-        .option("width", "W", "256", "image width of generated rays")
-        .option("height", "H", "256", "image height of generated rays")
+        .option("width", "W", "256", "image width of generated rays, 1..16384 (16384 x 16384 rays need 14 GB of memory or more: "
+                "refused where the machine has less)")
+        .option("height", "H", "256", "image height of generated rays, 1..16384")
         .option("seed", "S", "1", "seed of diffuse rays")
         .option("rays-out", "FILE", "", "write the rays traced to this file")
         .option("out", "FILE", "", "write the hits to this file (STRAHLH1)")
         .flag("any-hit", "ask for any hit instead of the closest (shadow rays always do)")
-        .option("threads", "N", "1", "threads tracing (the structure is built once)")
+        .option("threads", "N", "1", "threads tracing, 1..1024 (the structure is built once)")
         .option("repeat", "K", "1", "trace K times, report the median")
         .flag("force", "replace existing output files");
     if (!args.parse(argc, argv)) return 0;
-    const int threads = args.get_int("threads"), repeat = args.get_int("repeat");
-    if (threads < 1 || repeat < 1) throw usage_error("--threads and --repeat must be at least 1");
-    const registry_options reg{threads, args.get_int("width")};
+    const int threads = read_threads(args, 1), repeat = args.get_int("repeat");
+    if (repeat < 1) throw usage_error("--repeat must be at least 1");
+    // The image size is checked before anything uses it, --list included: the width also sets Embree's
+    // packet entry, which a width of 0 would drop from the list without a word.
+    const int w = args.get_int("width"), h = args.get_int("height");
+    if (w < 1 || h < 1 || w > max_side || h > max_side)
+        throw usage_error("--width and --height must lie in 1.." + std::to_string(max_side));
+    const registry_options reg{threads, w};
 
     if (args.has("list")) {
         for (const accel_entry& e : registered_accels(reg))
@@ -61,9 +70,27 @@ int run(int argc, const char* const* argv) {
     for (const char* o : {"out", "rays-out"})
         if (args.has(o) && args.has("rays") && same(args.get(o), args.get("rays")))
             throw usage_error(std::string("--") + o + " names the rays file it would read, " + args.get("rays"));
+    const accel_entry entry = find_accel(args.get("accel"), reg);
+
+    // The memory the rays, their answers and the files written take, checked before any is allocated: at
+    // 16384 x 16384, 14 to 41 GB, more than many machines have.
+    const std::uint64_t per_ray = sizeof(ray) + sizeof(hit) + 1 + (args.has("rays-out") ? 32 : 0) +
+                                  (args.has("out") ? 16 : 0);
+    if (args.has("rays")) {
+        std::error_code ec;
+        const std::uintmax_t bytes = std::filesystem::file_size(args.get("rays"), ec);
+        if (!ec && bytes >= 16)  // (else read_rays below says what is wrong with the file)
+            check_memory(bytes + (bytes - 16) / 32 * per_ray, "tracing the " + std::to_string((bytes - 16) / 32) +
+                                                                  " rays of '" + args.get("rays") + "'");
+    } else {
+        // Secondary rays are made from primary rays and their hits, all held at once.
+        const bool secondary = parse_ray_kind(args.get("gen")) != ray_kind::primary;
+        check_memory(std::uint64_t(w) * std::uint64_t(h) * (per_ray + (secondary ? sizeof(ray) + sizeof(hit) : 0)),
+                     std::to_string(w) + " x " + std::to_string(h) + " " + args.get("gen") + " rays");
+    }
+    // Only now, with the whole command line found good, anything is created.
     for (const char* o : {"out", "rays-out"})
         if (args.has(o)) prepare_output(args.get(o), true, args.has("force"));
-    const accel_entry entry = find_accel(args.get("accel"), reg);
 
     const scene s = load_scene_spec(args.get("scene"), &std::cout);
     std::vector<ray> rays;
@@ -72,8 +99,6 @@ int run(int argc, const char* const* argv) {
         rays = read_rays(args.get("rays"));
     } else {
         const ray_kind kind = parse_ray_kind(args.get("gen"));
-        const int w = args.get_int("width"), h = args.get_int("height");
-        if (w < 1 || h < 1 || w > 16384 || h > 16384) throw usage_error("--width and --height must lie in 1..16384");
         brute_force exact;
         exact.build(s);
         rays = make_rays(kind, s, w, h, std::uint64_t(args.get_int("seed")), exact, threads);

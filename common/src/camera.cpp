@@ -1,6 +1,10 @@
 #include "strahl/camera.hpp"
+#include "strahl/scene.hpp"
+#include <cmath>
+#include <cstdio>
 #include <glm/gtc/matrix_transform.hpp>
 #include <stdexcept>
+#include <string>
 
 namespace strahl {
 
@@ -26,6 +30,33 @@ ray camera::generate(float x, float y) const {
     const float ndc_y = 1.0f - 2.0f * y / float(height_);
     const vec3 d = forward_ + (ndc_x * tan_half_fov_ * aspect_) * right_ + (ndc_y * tan_half_fov_) * up_;
     return ray{desc_.eye, glm::normalize(d), 0.0f, inf};
+}
+
+camera scene_camera(const scene& s, int width, int height) {
+    try {
+        return camera(s.camera, width, height);
+    } catch (const std::invalid_argument& e) {
+        std::string message = "scene '" + s.name + "': " + e.what();
+        const aabb box = s.bounds();
+        const vec3 extent = box.extent(), centre = box.centroid();
+        char cause[400] = "";
+        if (!box.is_empty() && !std::isfinite(glm::length(extent)))
+            // frame_camera fits the box's bounding sphere, of radius |extent| / 2, which overflows to +inf;
+            // its fallback radius of 1 is then lost against coordinates this large: eye and target coincide.
+            std::snprintf(cause, sizeof cause,
+                          "; the cause: the scene's extent (%.3g x %.3g x %.3g) overflows float arithmetic in the "
+                          "camera framing (the length of its diagonal exceeds float's largest value, 3.4e38): "
+                          "scale the mesh down",
+                          double(extent.x), double(extent.y), double(extent.z));
+        else if (!box.is_empty() && s.camera.eye == s.camera.target)
+            std::snprintf(cause, sizeof cause,
+                          "; the cause: the scene (extent %.3g x %.3g x %.3g) lies too far from the origin for its "
+                          "size (its centre at %.3g, %.3g, %.3g): the camera's distance from it is below float's "
+                          "resolution there; move the mesh towards the origin",
+                          double(extent.x), double(extent.y), double(extent.z), double(centre.x), double(centre.y),
+                          double(centre.z));
+        throw std::invalid_argument(message + cause);
+    }
 }
 
 mat4 camera::view_matrix() const { return glm::lookAt(desc_.eye, desc_.target, desc_.up); }

@@ -2,12 +2,16 @@
 #include "strahl/scene.hpp"
 #include "strahl/todo.hpp"
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <sstream>
+#include <thread>
 #include <unistd.h>
 
 namespace strahl {
@@ -18,6 +22,30 @@ std::string dashed(const std::string& name) {
     std::string s = "--";
     s += name;
     return s;
+}
+
+// A whole text read as one double, as strtod reads it. A subnormal (4e-320) is a number like any other;
+// a number beyond what a double holds (1e999, or 1e-999, which would round to 0) is out_of_range, so that
+// the messages can say so rather than "not a number". "inf" and "nan" are not finite: not_a_number.
+enum class number_read { ok, not_a_number, out_of_range };
+number_read read_double(const std::string& text, double& v) {
+    if (text.empty()) return number_read::not_a_number;
+    char* end = nullptr;
+    errno = 0;
+    v = std::strtod(text.c_str(), &end);
+    if (end == text.c_str() || end != text.c_str() + text.size()) return number_read::not_a_number;
+    // strtod sets ERANGE on overflow (+-HUGE_VAL), on underflow to zero, and (glibc) on a subnormal result,
+    // which is still the nearest double and is kept.
+    if (errno == ERANGE && (std::isinf(v) || v == 0.0)) return number_read::out_of_range;
+    if (!std::isfinite(v)) return number_read::not_a_number;
+    return number_read::ok;
+}
+
+std::string bytes_text(std::uint64_t bytes) {
+    char text[32];
+    if (bytes >= (std::uint64_t(1) << 30)) std::snprintf(text, sizeof text, "%.1f GiB", double(bytes) / double(1 << 30));
+    else std::snprintf(text, sizeof text, "%.0f MiB", double(bytes) / double(1 << 20));
+    return text;
 }
 }  // namespace
 
@@ -88,20 +116,30 @@ int cli::get_int(const std::string& name) const {
     const std::string s = get(name);
     std::size_t used = 0;
     long v = 0;
-    try { v = std::stol(s, &used); } catch (const std::exception&) { used = 0; }
-    if (used != s.size() || s.empty() || v < -2147483647L || v > 2147483647L)
-        throw usage_error(dashed(name) + " expects an integer, got '" + s + "'");
+    bool too_large = false;
+    try {
+        v = std::stol(s, &used);
+    } catch (const std::out_of_range&) {
+        too_large = true;
+    } catch (const std::exception&) {
+        used = 0;
+    }
+    if (too_large || (used == s.size() && (v < -2147483647L || v > 2147483647L)))
+        throw usage_error(dashed(name) + " expects an integer, got '" + s + "', out of range (at most 2147483647 in size)");
+    if (used != s.size() || s.empty()) throw usage_error(dashed(name) + " expects an integer, got '" + s + "'");
     return int(v);
 }
 
 double cli::get_double(const std::string& name) const {
     const std::string s = get(name);
-    std::size_t used = 0;
     double v = 0.0;
-    try { v = std::stod(s, &used); } catch (const std::exception&) { used = 0; }
-    if (used != s.size() || s.empty() || !std::isfinite(v))
-        throw usage_error(dashed(name) + " expects a finite number, got '" + s + "'");
-    return v;
+    switch (read_double(s, v)) {
+        case number_read::ok: return v;
+        case number_read::out_of_range:
+            throw usage_error(dashed(name) + " expects a finite number, got '" + s + "', out of range for a double");
+        case number_read::not_a_number: break;
+    }
+    throw usage_error(dashed(name) + " expects a finite number, got '" + s + "'");
 }
 
 std::string cli::usage() const {
@@ -140,8 +178,18 @@ void prepare_output(const std::filesystem::path& file, bool user_named, bool for
     if (file.empty()) throw std::runtime_error("empty output path");
     std::error_code ec;
     if (fs::is_directory(file, ec)) throw std::runtime_error("cannot write '" + file.string() + "': it is a folder");
-    if (user_named && !force && fs::exists(file, ec))
+    // A link to nothing: writing would create its target, wherever it points, a file the user never named.
+    if (fs::is_symlink(fs::symlink_status(file, ec)) && !fs::exists(file, ec))
+        throw std::runtime_error("'" + file.string() + "' is a symbolic link to '" + fs::read_symlink(file, ec).string() +
+                                 "', which does not exist; not writing through it (remove the link, or name the "
+                                 "file it should point to)");
+    const bool exists = fs::exists(file, ec);
+    if (user_named && !force && exists)
         throw std::runtime_error("'" + file.string() + "' exists; not overwriting it (pass --force to replace it)");
+    // An existing file that cannot be written (read-only) would fail only after the work: found now.
+    if (exists && access(file.c_str(), W_OK) != 0)
+        throw std::runtime_error("cannot replace '" + file.string() + "': " + std::strerror(errno) +
+                                 " (the file is read-only?)");
     const fs::path folder = file.has_parent_path() ? file.parent_path() : fs::path(".");
     fs::create_directories(folder, ec);
     if (!fs::is_directory(folder))
@@ -151,12 +199,68 @@ void prepare_output(const std::filesystem::path& file, bool user_named, bool for
         throw std::runtime_error("cannot write into folder '" + folder.string() + "' (permission denied)");
 }
 
-image_size read_image_size(const cli& args, int default_width, int max_side) {
+int read_threads(const cli& args, int lo) {
+    const int n = args.get_int("threads");
+    if (n < lo || n > max_threads)
+        throw usage_error("--threads must lie in [" + std::to_string(lo) + ", " + std::to_string(max_threads) + "]" +
+                          (lo == 0 ? " (0: one per core)" : "") + ", not " + std::to_string(n) + "; this machine has " +
+                          std::to_string(std::thread::hardware_concurrency()) + " hardware threads");
+    return n;
+}
+
+std::uint64_t available_memory() {
+    constexpr std::uint64_t unknown = std::numeric_limits<std::uint64_t>::max();
+    std::uint64_t bytes = 0;
+    std::ifstream meminfo("/proc/meminfo");
+    for (std::string key; meminfo >> key;) {
+        std::uint64_t kib = 0;
+        if (key == "MemAvailable:" && meminfo >> kib) {
+            bytes = kib * 1024;
+            break;
+        }
+        meminfo.ignore(std::numeric_limits<std::streamsize>::max(), '\n');
+    }
+    if (bytes == 0) {
+        const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
+        bytes = pages > 0 && page > 0 ? std::uint64_t(pages) * std::uint64_t(page) : unknown;
+    }
+    // In a container MemAvailable is the host's; the container's own limit (cgroup v2, else v1) may be less.
+    // (Its limit, not the limit less its use: the use counts page cache the kernel would give back.)
+    for (const char* limit_file : {"/sys/fs/cgroup/memory.max", "/sys/fs/cgroup/memory/memory.limit_in_bytes"}) {
+        std::ifstream limit_in(limit_file);
+        std::uint64_t limit = 0;
+        if (limit_in >> limit) {  // "max", no limit, reads as no number
+            bytes = std::min(bytes, limit);
+            break;
+        }
+    }
+    if (const char* env = std::getenv("STRAHL_MEMORY_LIMIT_MB")) {
+        char* end = nullptr;
+        const unsigned long long mb = std::strtoull(env, &end, 10);
+        if (*env == 0 || *end != 0 || mb > (unknown >> 20))
+            throw std::runtime_error(std::string("STRAHL_MEMORY_LIMIT_MB must be a whole number of megabytes, not '") +
+                                     env + "'");
+        bytes = std::min<std::uint64_t>(bytes, mb << 20);
+    }
+    return bytes;
+}
+
+void check_memory(std::uint64_t bytes, const std::string& what) {
+    const std::uint64_t available = available_memory();
+    if (bytes > available)
+        throw std::runtime_error(what + ": about " + bytes_text(bytes) + " of memory needed, but only " +
+                                 bytes_text(available) + " available");
+}
+
+image_size read_image_size(const cli& args, int default_width, int max_side, std::uint64_t bytes_per_pixel) {
     image_size size;
     size.width = args.has("width") ? args.get_int("width") : default_width;
     size.height = args.has("height") ? args.get_int("height") : size.width * 3 / 4;
     if (size.width < 1 || size.width > max_side || size.height < 1 || size.height > max_side)
         throw usage_error("--width and --height must lie in [1, " + std::to_string(max_side) + "]");
+    if (bytes_per_pixel > 0)
+        check_memory(std::uint64_t(size.width) * std::uint64_t(size.height) * bytes_per_pixel,
+                     "a " + std::to_string(size.width) + " x " + std::to_string(size.height) + " image");
     return size;
 }
 
@@ -236,16 +340,13 @@ std::vector<csv_row> read_csv(const std::filesystem::path& file, const std::stri
 
 double csv_number(const std::filesystem::path& file, const csv_row& row, std::size_t k) {
     const std::string& cell = row.cells.at(k);
-    std::size_t used = 0;
     double v = 0.0;
-    try {
-        v = std::stod(cell, &used);
-    } catch (const std::exception&) {
-        used = 0;
-    }
-    if (used == 0 || used != cell.size() || !std::isfinite(v) || v < 0.0)
-        throw std::runtime_error(file.string() + ", line " + std::to_string(row.line) + ": '" + cell +
-                                 "' is not a number >= 0");
+    const number_read r = read_double(cell, v);
+    const std::string where = file.string() + ", line " + std::to_string(row.line) + ": '" + cell + "'";
+    if (r == number_read::out_of_range)
+        throw std::runtime_error(where + " is out of range: no double holds it (they lie within about 4.9e-324 "
+                                         "to 1.8e308)");
+    if (r != number_read::ok || v < 0.0) throw std::runtime_error(where + " is not a number >= 0");
     return v;
 }
 

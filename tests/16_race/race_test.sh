@@ -37,13 +37,14 @@ contains "$dir/out" "0 traced by brute force" "second run reads the cache"
 [[ $(cut -d, -f1-4 "$dir/first.csv") == $(cut -d, -f1-4 "$out/race.csv") ]] || fail "the two runs' rows differ"
 
 # A cache file whose answers are wrong but well-formed: every any-hit flag of the primary rays 0 (most of
-# them hit the teapot).
+# them hit the teapot). Its checksum no longer holds.
 flags=$(ls "$out"/reference_cache/*_primary_any_*.flags)
 count=$(($(stat -c %s "$flags") - 16))
 { head -c 16 "$flags"; head -c "$count" /dev/zero; } >"$dir/zeros" && mv "$dir/zeros" "$flags"
 runs "tampered cache" 0 "$race" "${tiny[@]}" --out "$out"
-contains "$dir/out" "is stale" "tampered cache"
+contains "$dir/out" "does not match the checksum in its name" "tampered cache"
 contains "$dir/out" "1 stale files replaced" "tampered cache"
+[[ $(ls "$out/reference_cache" | wc -l) -eq 5 ]] || fail "tampered cache: the cache should hold 5 files again"
 
 runs "--no-cache" 0 "$race" "${tiny[@]}" --out "$dir/fresh" --no-cache
 [[ ! -e $dir/fresh/reference_cache ]] || fail "--no-cache wrote a cache"

@@ -94,4 +94,54 @@ refuses "--out onto the rays read" 2 "names the rays file it would read" --scene
     --out "$dir/./R" --force
 cmp "$dir/R" "$dir/R.before" || fail "--out onto the rays read: the rays file changed"
 
+# Hostile command lines: refused at once with the limit named, nothing created.
+refuses "--threads 2147483647" 2 "--threads must lie in [1, 1024], not 2147483647" --scene builtin:teapot \
+    --gen primary --width 8 --height 8 --threads 2147483647 --out "$dir/threads/H"
+[[ ! -e $dir/threads ]] || fail "--threads 2147483647: the --out folder was created"
+# --list with a width of 0 dropped Embree's packet row without a word: the size is checked for --list too.
+refuses "--list --width 0" 2 "--width and --height must lie in 1..16384" --list --width 0
+succeeds "--help" --help
+contains "$dir/out" "1..16384" "--help states the image size limit"
+contains "$dir/out" "1..1024" "--help states the thread limit"
+# An image too large for the memory there is: refused before anything is allocated or created, saying
+# how much it needs (STRAHL_MEMORY_LIMIT_MB stands for a small machine).
+export STRAHL_MEMORY_LIMIT_MB=64
+refuses "too large for memory" 1 "16384 x 16384 primary rays: about 25" --scene builtin:teapot --gen primary \
+    --width 16384 --height 16384 --out "$dir/big/H" --rays-out "$dir/big/R"
+contains "$dir/err" "GiB of memory needed, but only 64 MiB available" "too large for memory"
+[[ ! -e $dir/big ]] || fail "too large for memory: the --out folder was created"
+export STRAHL_MEMORY_LIMIT_MB=0
+refuses "rays file too large for memory" 1 "tracing the 768 rays of '$dir/R': about" --scene builtin:teapot \
+    --rays "$dir/R" --out "$dir/big/H"
+[[ ! -e $dir/big ]] || fail "rays file too large for memory: the --out folder was created"
+export STRAHL_MEMORY_LIMIT_MB=1024
+succeeds "small enough for memory" --scene builtin:teapot --gen primary --width 64 --height 48
+unset STRAHL_MEMORY_LIMIT_MB
+# A symbolic link to nothing as --out: not written through (its target would appear where it points).
+ln -s "$dir/link_target" "$dir/dangling"
+refuses "--out a dangling link" 1 "is a symbolic link to '$dir/link_target', which does not exist" \
+    --scene builtin:teapot --rays "$dir/R" --out "$dir/dangling" --force
+[[ ! -e $dir/link_target ]] || fail "--out a dangling link: written through it"
+# A read-only --out with --force: found before tracing (as a user other than root, who may write it anyway).
+as_user=()
+[[ $(id -u) -ne 0 ]] || as_user=(setpriv --reuid=65534 --regid=65534 --clear-groups)
+if [[ $(id -u) -ne 0 ]] || command -v setpriv >/dev/null; then
+    mkdir -p "$dir/read_only" && chmod 777 "$dir/read_only"
+    cp "$dir/R" "$dir/read_only/R" && chmod 444 "$dir/read_only/R"
+    cp "$dir/H" "$dir/read_only/H" && chmod 444 "$dir/read_only/H"
+    rc=0
+    "${as_user[@]}" "$trace" --scene builtin:teapot --rays "$dir/read_only/R" --out "$dir/read_only/H" --force \
+        >"$dir/out" 2>"$dir/err" || rc=$?
+    [[ $rc -eq 1 ]] || fail "read-only --out with --force: exit $rc, expected 1"
+    contains "$dir/err" "cannot replace '$dir/read_only/H'" "read-only --out with --force"
+    ! grep -q "Mrays/s" "$dir/out" || fail "read-only --out with --force: traced before refusing"
+else
+    echo "note: read-only --out not checked (running as root without setpriv)"
+fi
+# A scene of extent 2e19: its camera cannot be framed in float; the message names the scene and the cause.
+printf 'v 0 0 0\nv 2e19 0 2e19\nv 0 2e19 2e19\nf 1 2 3\n' >"$dir/huge.obj"
+refuses "a scene too large for float" 1 "scene 'huge.obj': camera: eye equals target" --scene "$dir/huge.obj" \
+    --gen primary --width 8 --height 8
+contains "$dir/err" "overflows float arithmetic in the camera framing" "a scene too large for float"
+
 finish strahl-trace

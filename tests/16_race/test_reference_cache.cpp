@@ -1,7 +1,8 @@
 // Chapter 16's cache of brute force's answers (reference_cache.hpp): a second run reads exactly what the
 // first traced; a changed scene or ray set gets files of its own; a file that is corrupt, truncated, of the
-// wrong size or whose answers brute force no longer gives is traced again and replaced; a folder that cannot
-// be written costs the cache, never the answers.
+// wrong size or whose answers brute force no longer gives is traced again and replaced, and so is one
+// altered in a single record the audit's sample does not hold (the checksum catches it); a folder that
+// cannot be written costs the cache, never the answers.
 #include "strahl/procedural.hpp"
 #include "strahl/race/ray_io.hpp"
 #include "strahl/race/reference_cache.hpp"
@@ -50,9 +51,9 @@ struct fixture {
     std::vector<ray> rays;
     std::vector<hit> hits;
     std::vector<std::uint8_t> blocked;
-    fixture() {
+    explicit fixture(int width = 32, int height = 24) {
         exact.build(s);
-        rays = primary_rays(s, 32, 24);
+        rays = primary_rays(s, width, height);
         hits.resize(rays.size());
         blocked.resize(rays.size());
         trace_closest(exact, rays, hits);
@@ -169,6 +170,76 @@ TEST_CASE("ch16 reference cache: corrupt, truncated and stale files are traced a
     write_hits(hits_file, std::vector<hit>(f.hits.begin(), f.hits.end() - 1));
     write_flags(flags_file, std::vector<std::uint8_t>(f.blocked.size() + 1, 0));
     check_replaced("answers for a different number of rays");
+}
+
+namespace {
+
+// The rays the audit re-traces (reference_cache.cpp's rule): audit_rays spread evenly over the set, and as
+// many spread evenly over the rays the file says hit. A record outside both is one the audit cannot catch.
+template <class Answer, class Hits>
+std::vector<bool> audited(const std::vector<Answer>& answers, Hits says_hit) {
+    std::vector<bool> in(answers.size(), false);
+    std::vector<std::size_t> all(answers.size()), hit_ids;
+    for (std::size_t i = 0; i < answers.size(); ++i) {
+        all[i] = i;
+        if (says_hit(answers[i])) hit_ids.push_back(i);
+    }
+    for (const std::vector<std::size_t>* from : {&all, &hit_ids}) {
+        const std::size_t m = std::min(from->size(), reference_cache::audit_rays);
+        for (std::size_t k = 0; k < m; ++k) in[(*from)[k * from->size() / m]] = true;
+    }
+    return in;
+}
+
+}  // namespace
+
+TEST_CASE("ch16 reference cache: one record altered outside the audit's sample is caught by the checksum",
+          "[ch16][cache]") {
+    const fs::path dir = test::scratch_dir("ch16_cache_checksum");
+    fixture f(64, 48);  // 3,072 rays: the audit's 256 leave most records unchecked
+    {
+        reference_cache c(dir, f.s, f.exact, 1);
+        c.closest("primary", f.rays);
+        c.any("primary", f.rays);
+    }
+    const fs::path hits_file = only_file(dir, "closest"), flags_file = only_file(dir, "any");
+    REQUIRE(!hits_file.empty());
+    REQUIRE(!flags_file.empty());
+
+    // A hit the audit does not re-trace, its t one float step further: well-formed, and wrong.
+    const std::vector<bool> hit_sampled = audited(f.hits, [](const hit& h) { return h.found(); });
+    std::size_t victim = f.hits.size();
+    for (std::size_t i = 0; i < f.hits.size() && victim == f.hits.size(); ++i)
+        if (f.hits[i].found() && !hit_sampled[i]) victim = i;
+    REQUIRE(victim < f.hits.size());
+    std::vector<hit> wrong = f.hits;
+    wrong[victim].t = std::nextafter(wrong[victim].t, inf);
+    write_hits(hits_file, wrong);
+
+    // An any-hit flag flipped where the audit of the altered file does not look (flipping one changes the
+    // rays the file says hit, and so the audit's second half).
+    std::vector<std::uint8_t> flags;
+    for (std::size_t i = 0; i < f.blocked.size(); ++i) {
+        flags = f.blocked;
+        flags[i] ^= 1;
+        if (!audited(flags, [](std::uint8_t b) { return b != 0; })[i]) break;
+        flags.clear();
+    }
+    REQUIRE(!flags.empty());
+    write_flags(flags_file, flags);
+
+    reference_cache c(dir, f.s, f.exact, 1);
+    CHECK(same_bits(c.closest("primary", f.rays), f.hits));
+    CHECK(c.any("primary", f.rays) == f.blocked);
+    CHECK(c.stale() == 2);
+    CHECK(c.traced() == 2);
+    CHECK(files_in(dir).size() == 2);  // the altered files replaced, not kept beside the new ones
+
+    // The files written again are whole and used as they are.
+    reference_cache again(dir, f.s, f.exact, 1);
+    CHECK(same_bits(again.closest("primary", f.rays), f.hits));
+    CHECK(again.any("primary", f.rays) == f.blocked);
+    CHECK(again.loaded() == 2);
 }
 
 TEST_CASE("ch16 reference cache: no folder, or one that cannot be written: answers all the same",

@@ -4,6 +4,7 @@
 #include "strahl/aabb.hpp"
 #include "strahl/camera.hpp"
 #include "strahl/parallel.hpp"
+#include "strahl/procedural.hpp"
 #include "strahl/program.hpp"
 #include "strahl/progress.hpp"
 #include "strahl/rng.hpp"
@@ -13,6 +14,7 @@
 #include "strahl/todo.hpp"
 #include "test_support.hpp"
 #include <atomic>
+#include <cstdlib>
 #include <fstream>
 #include <set>
 #include <sys/stat.h>
@@ -123,6 +125,24 @@ TEST_CASE("camera: bad set-ups are refused", "[common][camera]") {
     d = camera_desc{};
     d.eye.x = std::nanf("");
     CHECK_THROWS_AS(camera(d, 10, 10), std::invalid_argument);
+}
+
+TEST_CASE("scene_camera: a scene whose camera cannot be made is named, with the cause", "[common][camera]") {
+    // One triangle of size s at offset o from the origin, framed as load_scene frames a mesh file.
+    const auto one_triangle = [](const char* name, float s, float o) {
+        triangle_mesh m;
+        m.positions = {vec3(o), vec3(o + s, o, o + s), vec3(o, o + s, o + s)};
+        m.indices = {uvec3(0, 1, 2)};
+        return mesh_scene(name, m);
+    };
+    CHECK(scene_camera(one_triangle("fine.obj", 1e12f, 0.0f), 8, 8).width() == 8);
+    // An extent of 2e19: the framing squares it (beyond 3.4e38) and its fallback distance is lost.
+    CHECK_THROWS_WITH(scene_camera(one_triangle("huge.obj", 2e19f, 0.0f), 8, 8),
+                      Contains("scene 'huge.obj'") && Contains("eye equals target") &&
+                          Contains("extent (2e+19 x 2e+19 x 2e+19)") && Contains("overflows float arithmetic"));
+    // A size of 1e-3 at 1e9 from the origin: the camera's distance is below float's spacing there.
+    CHECK_THROWS_WITH(scene_camera(one_triangle("far.obj", 1e-3f, 1e9f), 8, 8),
+                      Contains("scene 'far.obj'") && Contains("too far from the origin for its size"));
 }
 
 TEST_CASE("pcg32: deterministic, seed- and stream-dependent, in range, unbiased enough", "[common][rng]") {
@@ -320,7 +340,17 @@ TEST_CASE("cli: options, flags, defaults, --help and clear errors", "[common][cl
     fails({"--width"}, "needs a value");
     fails({"--width", "12x"}, "expects an integer");
     fails({"--width", "99999999999"}, "expects an integer");
+    fails({"--width", "99999999999"}, "out of range");
     fails({"--scale", "nan"}, "expects a finite number");
+    fails({"--scale", "1e999"}, "out of range");
+    fails({"--scale", "1e-999"}, "out of range");
+    {
+        // A subnormal is a number like any other.
+        cli c = make();
+        const char* argv[] = {"prog", "--scale", "4e-320"};
+        REQUIRE(c.parse(3, argv));
+        CHECK(c.get_double("scale") == 4e-320);
+    }
     fails({"--quick=1"}, "takes no value");
     fails({"stray"}, "unexpected argument");
 }
@@ -345,6 +375,36 @@ TEST_CASE("STRAHL_TODO names the exercise, file and line, guarded_main maps erro
     CHECK(guarded_main("prog", returns_zero, 1, argv) == 0);
 }
 
+TEST_CASE("read_threads: --threads within [lo, 1024], a clear error beyond", "[common][cli]") {
+    const auto threads = [](const char* value, int lo) {
+        cli c("prog", "Does things.");
+        c.option("threads", "N", "0", "threads");
+        const char* argv[] = {"prog", "--threads", value};
+        REQUIRE(c.parse(3, argv));
+        return read_threads(c, lo);
+    };
+    CHECK(threads("0", 0) == 0);
+    CHECK(threads("1024", 1) == 1024);
+    CHECK_THROWS_WITH(threads("2147483647", 1), Contains("--threads must lie in [1, 1024], not 2147483647") &&
+                                                    Contains("hardware threads"));
+    CHECK_THROWS_WITH(threads("1025", 0), Contains("[0, 1024] (0: one per core)"));
+    CHECK_THROWS_WITH(threads("0", 1), Contains("[1, 1024]"));
+    CHECK_THROWS_AS(threads("-1", 0), usage_error);
+}
+
+TEST_CASE("check_memory: work needing more memory than there is is refused, saying how much", "[common][memory]") {
+    CHECK(available_memory() > 0);
+    CHECK_NOTHROW(check_memory(1 << 20, "a small image"));
+    setenv("STRAHL_MEMORY_LIMIT_MB", "512", 1);
+    CHECK(available_memory() <= (std::uint64_t(512) << 20));
+    CHECK_NOTHROW(check_memory(std::uint64_t(100) << 20, "a small image"));
+    CHECK_THROWS_WITH(check_memory(std::uint64_t(17) << 30, "a 16384 x 16384 image"),
+                      Contains("a 16384 x 16384 image: about 17.0 GiB of memory needed, but only 512 MiB available"));
+    setenv("STRAHL_MEMORY_LIMIT_MB", "lots", 1);
+    CHECK_THROWS_WITH(available_memory(), Contains("STRAHL_MEMORY_LIMIT_MB") && Contains("'lots'"));
+    unsetenv("STRAHL_MEMORY_LIMIT_MB");
+}
+
 TEST_CASE("prepare_output: creates folders, never overwrites a user's file unasked", "[common][output]") {
     const auto dir = test::scratch_dir("prepare_output");
     const auto nested = dir / "a" / "b" / "image.png";
@@ -363,7 +423,22 @@ TEST_CASE("prepare_output: creates folders, never overwrites a user's file unask
         chmod((dir / "locked").c_str(), 0500);
         CHECK_THROWS_WITH(prepare_output(dir / "locked" / "x.png", false, false), Contains("permission denied"));
         chmod((dir / "locked").c_str(), 0700);
+        // A read-only file is found before the work, --force or not.
+        std::ofstream(dir / "read_only.png") << "x";
+        chmod((dir / "read_only.png").c_str(), 0400);
+        CHECK_THROWS_WITH(prepare_output(dir / "read_only.png", true, true),
+                          Contains("cannot replace") && Contains("read-only"));
+        CHECK_THROWS_WITH(prepare_output(dir / "read_only.png", false, false), Contains("cannot replace"));
     }
+    // A symbolic link to nothing: not written through (its target would be created wherever it points).
+    std::filesystem::create_symlink(dir / "nowhere" / "target.png", dir / "dangling.png");
+    CHECK_THROWS_WITH(prepare_output(dir / "dangling.png", true, true),
+                      Contains("is a symbolic link to") && Contains("which does not exist"));
+    CHECK_FALSE(std::filesystem::exists(dir / "nowhere"));
+    // A link to an existing file is that file: replaced with --force, as the user asked.
+    std::filesystem::create_symlink(dir / "mine.png", dir / "link.png");
+    CHECK_THROWS_WITH(prepare_output(dir / "link.png", true, false), Contains("not overwriting"));
+    CHECK_NOTHROW(prepare_output(dir / "link.png", true, true));
 }
 
 TEST_CASE("read_csv and csv_number: a program's own table back, anything else refused with file and line",
@@ -414,5 +489,11 @@ TEST_CASE("read_csv and csv_number: a program's own table back, anything else re
     REQUIRE(b.size() == 5);
     for (const csv_row& r : b) CHECK_THROWS_WITH(csv_number(bad, r, 1), Contains("line " + std::to_string(r.line)) &&
                                                                             Contains("is not a number >= 0"));
-    CHECK_THROWS_WITH(csv_number(bad, b[4], 2), Contains("'1e400'"));  // out of double's range
+    CHECK_THROWS_WITH(csv_number(bad, b[4], 2), Contains("'1e400'") && Contains("is out of range"));
+
+    // A subnormal is a number; a number beyond double's range in either direction is out of range.
+    const auto tiny = file("tiny.csv", header + "\nx,4e-320,1e-400\n");
+    const std::vector<csv_row> t = read_csv(tiny, header, "a test table");
+    CHECK(csv_number(tiny, t[0], 1) == 4e-320);
+    CHECK_THROWS_WITH(csv_number(tiny, t[0], 2), Contains("'1e-400' is out of range"));
 }

@@ -26,7 +26,7 @@ std::string to_string(ray_kind k) {
 
 std::vector<ray> primary_rays(const scene& s, int width, int height) {
     if (width < 1 || height < 1) throw std::invalid_argument("primary_rays: image size must be positive");
-    const camera cam(s.camera, width, height);
+    const camera cam = scene_camera(s, width, height);  // (a camera that cannot be made names the scene)
     std::vector<ray> rays;
     rays.reserve(std::size_t(width) * height);
     for (int y = 0; y < height; ++y)

@@ -9,7 +9,9 @@
 #include <cstdio>
 #include <functional>
 #include <iostream>
+#include <optional>
 #include <regex>
+#include <utility>
 
 namespace strahl::race {
 
@@ -54,15 +56,41 @@ std::vector<std::size_t> audit_sample(const std::vector<Answer>& cached) {
     return ids;
 }
 
-enum class cached { absent, usable, rejected };
+// The checksum of an answer set: FNV-1a over the hash of the inputs it was traced for (the scene's triangles
+// and the rays, as in the file's name) and then every answer, as the file stores it. A file whose answers no
+// longer give the checksum in its name was corrupted or altered after it was written, in any record: the
+// audit below re-traces only a sample and would miss most such changes.
+std::uint64_t checksum(std::uint64_t inputs, std::span<const hit> answers) {
+    fnv1a h;
+    h.h = inputs;
+    h.add(std::string("closest"));
+    h.add(std::uint32_t(answers.size())), h.add(std::uint32_t(std::uint64_t(answers.size()) >> 32));
+    for (const hit& a : answers) h.add(a.t), h.add(a.prim), h.add(a.u), h.add(a.v);
+    return h.h;
+}
+std::uint64_t checksum(std::uint64_t inputs, std::span<const std::uint8_t> answers) {
+    fnv1a h;
+    h.h = inputs;
+    h.add(std::string("any"));
+    h.add(std::uint32_t(answers.size())), h.add(std::uint32_t(std::uint64_t(answers.size()) >> 32));
+    for (const std::uint8_t a : answers) h.add(std::uint32_t(a));
+    return h.h;
+}
 
-// Loads a cached answer file and checks it: the right count, and the sample traced again agrees. Says why
-// on stdout when a file is there but cannot be used.
+std::string hex(std::uint64_t v) {
+    char text[17];
+    std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(v));
+    return text;
+}
+
+enum class cached { usable, rejected };
+
+// Loads a cached answer file and checks it: the right count, the checksum its name holds (none: a file
+// from before the race kept one), and the sample traced again agrees. Says why on stdout when it cannot
+// be used.
 template <class Answer, class Read, class Trace, class Same>
-cached load(const std::filesystem::path& f, std::span<const ray> rays, std::vector<Answer>& out, Read read,
-            Trace trace, Same agree) {
-    std::error_code ec;
-    if (!std::filesystem::exists(f, ec)) return cached::absent;
+cached load(const std::filesystem::path& f, std::uint64_t inputs, std::optional<std::uint64_t> sum,
+            std::span<const ray> rays, std::vector<Answer>& out, Read read, Trace trace, Same agree) {
     try {
         out = read(f);
     } catch (const format_error& e) {
@@ -72,6 +100,16 @@ cached load(const std::filesystem::path& f, std::span<const ray> rays, std::vect
     if (out.size() != rays.size()) {
         std::cout << "  reference cache: '" << f.string() << "' holds " << out.size() << " answers, not "
                   << rays.size() << "; tracing again\n";
+        return cached::rejected;
+    }
+    if (!sum) {
+        std::cout << "  reference cache: '" << f.string() << "' has no checksum in its name (written by an "
+                  << "older race); tracing again\n";
+        return cached::rejected;
+    }
+    if (const std::uint64_t got = checksum(inputs, std::span<const Answer>(out)); got != *sum) {
+        std::cout << "  reference cache: '" << f.string() << "' does not match the checksum in its name (its "
+                  << "answers give " << hex(got) << "): corrupt, or altered since it was written; tracing again\n";
         return cached::rejected;
     }
     const std::vector<std::size_t> ids = audit_sample(out);
@@ -85,6 +123,30 @@ cached load(const std::filesystem::path& f, std::span<const ray> rays, std::vect
     std::cout << "  reference cache: '" << f.string() << "' is stale (" << differ << " of " << ids.size()
               << " sampled rays differ from brute force now); tracing again\n";
     return cached::rejected;
+}
+
+// The cache's files for one answer set: PREFIX_SUM.EXT (SUM: the answers' checksum) and, from races before
+// the checksum, PREFIX.EXT; each with its checksum, if any. Sorted, so that the order does not depend on
+// the folder's.
+std::vector<std::pair<std::filesystem::path, std::optional<std::uint64_t>>> candidates(
+    const std::filesystem::path& folder, const std::string& prefix, const std::string& ext) {
+    std::vector<std::pair<std::filesystem::path, std::optional<std::uint64_t>>> out;
+    std::error_code ec;
+    for (const auto& e : std::filesystem::directory_iterator(folder, ec)) {
+        const std::string name = e.path().filename().string();
+        if (name.size() < prefix.size() + ext.size() || name.compare(0, prefix.size(), prefix) != 0 ||
+            !name.ends_with(ext))
+            continue;
+        const std::string middle = name.substr(prefix.size(), name.size() - prefix.size() - ext.size());
+        if (middle.empty()) {
+            out.emplace_back(e.path(), std::nullopt);
+        } else if (middle.size() == 17 && middle[0] == '_' &&
+                   middle.find_first_not_of("0123456789abcdef", 1) == std::string::npos) {
+            out.emplace_back(e.path(), std::stoull(middle.substr(1), nullptr, 16));
+        }
+    }
+    std::sort(out.begin(), out.end());
+    return out;
 }
 
 }  // namespace
@@ -104,40 +166,48 @@ reference_cache::reference_cache(std::filesystem::path folder, const scene& s, c
     scene_hash_ = h.h;
 }
 
-std::filesystem::path reference_cache::file(const std::string& set, const char* query, std::span<const ray> rays) const {
+std::string reference_cache::prefix(const std::string& set, const char* query, std::span<const ray> rays,
+                                    std::uint64_t& inputs) const {
     fnv1a h;
     h.h = scene_hash_;
     h.add(std::string(query));
     h.add(std::uint32_t(rays.size()));
     for (const ray& r : rays) h.add(r.org), h.add(r.tmin), h.add(r.dir), h.add(r.tmax);
-    char hex[17];
-    std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h.h));
-    return folder_ / (stem_ + "_" + set + "_" + query + "_" + hex + (query[0] == 'c' ? ".hits" : ".flags"));
+    inputs = h.h;
+    return stem_ + "_" + set + "_" + query + "_" + hex(inputs);
 }
 
-// The answers from the file when it is usable; else traced, and written through a temporary file and a
-// rename, so that an interrupted run leaves no half-written file. A cache that cannot be written is no
-// error: the race says so once and goes on without it.
+// The answers from a file when one is usable; else traced, and written through a temporary file and a
+// rename, so that an interrupted run leaves no half-written file. Files that were there but unusable are
+// removed. A cache that cannot be written is no error: the race says so once and goes on without it.
 template <class Answer, class Read, class Write, class Trace, class Same>
 std::vector<Answer> reference_cache::answers(const std::string& set, const char* query, std::span<const ray> rays,
                                              Read read, Write write, Trace trace, Same agree) {
     std::vector<Answer> out;
-    const std::filesystem::path f = folder_.empty() ? std::filesystem::path() : file(set, query, rays);
-    if (!f.empty()) {
-        const cached c = load(f, rays, out, read, trace, agree);
-        if (c == cached::usable) {
-            // Touched: the file was used now (prune_reference_cache removes the least recently used).
+    std::uint64_t inputs = 0;
+    const std::string name = folder_.empty() ? std::string() : prefix(set, query, rays, inputs);
+    const std::string ext = query[0] == 'c' ? ".hits" : ".flags";
+    if (!folder_.empty()) {
+        bool rejected = false;
+        for (const auto& [f, sum] : candidates(folder_, name, ext)) {
+            if (load(f, inputs, sum, rays, out, read, trace, agree) == cached::usable) {
+                // Touched: the file was used now (prune_reference_cache removes the least recently used).
+                std::error_code ec;
+                std::filesystem::last_write_time(f, std::filesystem::file_time_type::clock::now(), ec);
+                ++loaded_;
+                return out;
+            }
+            rejected = true;
             std::error_code ec;
-            std::filesystem::last_write_time(f, std::filesystem::file_time_type::clock::now(), ec);
-            ++loaded_;
-            return out;
+            std::filesystem::remove(f, ec);
         }
-        stale_ += c == cached::rejected;
+        stale_ += rejected;
     }
     out.assign(rays.size(), Answer{});
     trace(rays, out);
     ++traced_;
-    if (f.empty()) return out;
+    if (folder_.empty()) return out;
+    const std::filesystem::path f = folder_ / (name + "_" + hex(checksum(inputs, std::span<const Answer>(out))) + ext);
     std::error_code ec;
     std::filesystem::create_directories(folder_, ec);
     std::filesystem::path tmp = f;
@@ -169,8 +239,9 @@ std::vector<std::uint8_t> reference_cache::any(const std::string& set, std::span
 
 pruned_files prune_reference_cache(const std::filesystem::path& folder, std::uintmax_t max_bytes,
                                    std::filesystem::file_time_type since) {
-    // The cache's own files: NAME_SET_QUERY_HASH.hits or .flags (file() above), perhaps with .tmp after it.
-    static const std::regex ours(R"(.+_(closest|any)_[0-9a-f]{16}\.(hits|flags)(\.tmp)?)");
+    // The cache's own files: NAME_SET_QUERY_HASH_SUM.hits or .flags (answers() above), perhaps with .tmp after
+    // it, and NAME_SET_QUERY_HASH.hits or .flags, as races wrote them before the checksum.
+    static const std::regex ours(R"(.+_(closest|any)_[0-9a-f]{16}(_[0-9a-f]{16})?\.(hits|flags)(\.tmp)?)");
     struct entry {
         std::filesystem::path path;
         std::uintmax_t bytes;

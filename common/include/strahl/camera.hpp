@@ -51,4 +51,12 @@ private:
     float tan_half_fov_, aspect_;
 };
 
+struct scene;
+
+// The camera of a scene, s.camera at width x height. Where the camera cannot be made, the
+// std::invalid_argument names the scene and, where it can tell, the cause: a mesh whose extent overflows
+// float arithmetic in the camera framing (frame_camera squares it: beyond about 1.8e19), or one that lies
+// too far from the origin for its size (the camera's distance below float's resolution there).
+camera scene_camera(const scene& s, int width, int height);
+
 }  // namespace strahl

@@ -1,6 +1,7 @@
 // What every program of the course shares: command-line options with --help, an error policy, and the
 // rule that nothing the user wrote is overwritten without being asked.
 #pragma once
+#include <cstdint>
 #include <filesystem>
 #include <map>
 #include <optional>
@@ -34,7 +35,8 @@ public:
     bool has(const std::string& flag_name) const;     // a flag given, or an option given explicitly
     std::string get(const std::string& name) const;   // the option's value or its default
     int get_int(const std::string& name) const;       // throws usage_error if not an integer
-    double get_double(const std::string& name) const;  // throws usage_error if not a finite number
+    double get_double(const std::string& name) const;  // throws usage_error if not a finite number (subnormals
+                                                       // are numbers; 1e999 and 1e-999 are out of range)
     std::string usage() const;
 
 private:
@@ -54,15 +56,37 @@ int guarded_main(const char* program, int (*body)(int, const char* const*), int 
 
 // Prepares to write `file`: creates its folder and refuses (std::runtime_error) to replace an existing file
 // the user named themselves (user_named) unless force is set. Files in the course's own out/ folders are
-// the course's to regenerate. Also fails early, with a clear message, when the folder cannot be written.
+// the course's to regenerate. Also fails early, with a clear message, when the folder cannot be written,
+// when an existing file cannot be (read-only: found before the work, not after it), and when `file` is a
+// symbolic link to nothing (writing would create its target somewhere the user did not name).
 void prepare_output(const std::filesystem::path& file, bool user_named, bool force);
 
+// The most threads --threads takes. TBB and Embree set up state per thread they are allowed, so an
+// unbounded count (--threads 2147483647) allocates until memory runs out; 1024 is far above any machine
+// the course runs on.
+constexpr int max_threads = 1024;
+
+// --threads as the programs read it: an integer in [lo, max_threads] (lo = 0 where 0 means one thread per
+// core), else usage_error naming the range and this machine's hardware threads.
+int read_threads(const cli& args, int lo);
+
+// Bytes of memory this process can still use: /proc/meminfo's MemAvailable (the physical memory where
+// that is missing), or the container's memory limit (cgroup) where that is less. The environment variable
+// STRAHL_MEMORY_LIMIT_MB, where set, caps it (to keep a run small, and for the tests).
+std::uint64_t available_memory();
+
+// Refuses (std::runtime_error) to start work that needs more than available_memory(): "WHAT: about N GiB
+// of memory needed, but only M GiB available". Called before allocating, with an estimate that errs
+// large, so that a too-large image is refused at once instead of running the machine out of memory.
+void check_memory(std::uint64_t bytes, const std::string& what);
+
 // --width and --height as the chapter programs read them: the width from --width or default_width, the
-// height from --height or 3/4 of the width; both in [1, max_side], else usage_error.
+// height from --height or 3/4 of the width; both in [1, max_side], else usage_error. With bytes_per_pixel
+// (what the program holds per pixel at most, an estimate), also check_memory for width x height pixels.
 struct image_size {
     int width = 0, height = 0;
 };
-image_size read_image_size(const cli& args, int default_width, int max_side);
+image_size read_image_size(const cli& args, int default_width, int max_side, std::uint64_t bytes_per_pixel = 0);
 
 // A comma-separated list of integers in [lo, hi] for option --name ("4,16,64"); throws usage_error on
 // anything else, or on an empty list.
@@ -77,7 +101,8 @@ struct csv_row {
     std::vector<std::string> cells;
 };
 std::vector<csv_row> read_csv(const std::filesystem::path& file, const std::string& header, const std::string& what);
-// Field k of a row as a finite number >= 0; throws std::runtime_error naming the file and line otherwise.
+// Field k of a row as a finite number >= 0 (subnormals included); throws std::runtime_error naming the file
+// and line otherwise, saying "out of range" for numbers no double holds (1e999, 1e-999).
 double csv_number(const std::filesystem::path& file, const csv_row& row, std::size_t k);
 // A text for one CSV field: as it is, or in double quotes (quotes doubled) where it holds a comma, a quote or
 // a line break, so that read_csv gives it back whole.
