@@ -5,6 +5,14 @@
 
 namespace strahl::test {
 
+// Whether this test binary runs under AddressSanitizer (the asan preset). The heaviest scene-sized checks
+// skip themselves there, saying so: the release run covers their answers, the small scenes memory safety.
+#ifdef __SANITIZE_ADDRESS__
+inline constexpr bool under_sanitizers = true;
+#else
+inline constexpr bool under_sanitizers = false;
+#endif
+
 // ../shared/scenes/<name>, or an empty path when the course's shared meshes are not beside this clone
 // (a user's own clone): callers SKIP-style return with a WARN naming what was skipped.
 inline std::filesystem::path shared_scene(const std::string& name) {
