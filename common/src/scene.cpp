@@ -16,7 +16,8 @@
 //   6. meshes are concatenated in node order: depth first from the root, a node's own meshes in its
 //      mMeshes order before its children, each with the node's accumulated transform; a mesh referenced by
 //      two nodes appears twice. Points and lines are skipped; unreferenced vertices are dropped;
-//   7. with a log, a warning when the mesh is below float32 resolution at its distance from the origin.
+//   7. every coordinate within max_coordinate (scene.hpp says why);
+//   8. with a log, a warning when the mesh is below float32 resolution at its distance from the origin.
 // Reference: assimp 5.2 documentation, https://assimp-docs.readthedocs.io (Importer, aiScene, aiNode).
 #include "strahl/scene.hpp"
 #include "strahl/procedural.hpp"
@@ -998,11 +999,20 @@ triangle_mesh load_mesh(const std::filesystem::path& file, std::ostream* log) {
             if (!is_finite(p)) fail(file, "a node transform makes a coordinate non-finite (NaN or Inf)");
     }
     if (mesh.indices.empty()) fail(file, "contains no triangles");
+    // Step 7: the course's range. Beyond it the triangle tests' products overflow float.
+    for (const vec3& p : mesh.positions)
+        if (std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}) > max_coordinate) {
+            std::ostringstream what;
+            what << "has a vertex at (" << p.x << ", " << p.y << ", " << p.z << "), beyond +-1e12, the largest "
+                    "coordinate the course accepts (its float triangle tests multiply three lengths, which "
+                    "overflow above about 7e12): scale the scene down";
+            fail(file, what.str());
+        }
     if (log) {
         *log << summary(file.filename().string(), mesh.triangle_count(), mesh.positions.size());
         if (skipped > 0) *log << " (" << with_thousands(skipped) << " points and lines skipped)";
         *log << '\n';
-        // Step 7: a mesh that float32 cannot hold where it is: its size is below float resolution at its
+        // Step 8: a mesh that float32 cannot hold where it is: its size is below float resolution at its
         // distance from the origin (floats carry 24 bits: 2^-20 of the distance is 8 steps of the last bit),
         // so its corners have collapsed onto a few values. Loaded all the same; the user is told.
         const aabb box = mesh.bounds();

@@ -201,3 +201,19 @@ TEST_CASE("ch16 exactness: every exact structure equals brute force on a sphere 
         check_exact_structures(s, 40, 30);
     }
 }
+
+TEST_CASE("ch16 exactness: the course's range holds at its edge (max_coordinate)", "[ch16][exactness]") {
+    // An octahedron with its corners at +-max_coordinate on the axes, seen from a corner of the range: edges
+    // of 1.4e12 and origins 2.5e12 from the corners, the largest products the loader and the ray reader
+    // allow. Every structure must still find the hits (a larger max_coordinate, where the triangle tests'
+    // products overflow float, loses them all: 1e13 here finds none).
+    const float m = max_coordinate;
+    triangle_mesh octahedron;
+    octahedron.positions = {vec3(m, 0, 0), vec3(-m, 0, 0), vec3(0, m, 0), vec3(0, -m, 0), vec3(0, 0, m), vec3(0, 0, -m)};
+    for (const std::uint32_t x : {0u, 1u})
+        for (const std::uint32_t y : {2u, 3u})
+            for (const std::uint32_t z : {4u, 5u}) octahedron.indices.push_back(uvec3(x, y, z));
+    scene s = mesh_scene("octahedron_at_the_range", octahedron);
+    s.camera = camera_desc{vec3(1.0f, 0.6f, 0.8f) * m, vec3(0.0f), vec3(0, 1, 0), 90.0f};
+    check_exact_structures(s, 24, 18);
+}

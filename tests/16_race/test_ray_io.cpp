@@ -55,7 +55,7 @@ void patch_count(const fs::path& file, std::uint64_t count) {
 std::vector<ray> some_rays() {
     return {
         ray{vec3(1.5f, -2.25f, 3.0f), vec3(0.1f, 0.2f, -0.97f), 0.0f, inf},
-        ray{vec3(-0.0f, 1e-30f, -7e20f), vec3(-1.0f, 0.0f, 0.0f), 1e-4f, 12.5f},
+        ray{vec3(-0.0f, 1e-30f, -7e11f), vec3(-1.0f, 0.0f, 0.0f), 1e-4f, 12.5f},
         ray{vec3(0.3f, 0.7f, 0.1f), vec3(0.0f, 0.0f, 0.0f), 2.0f, 1.0f},  // odd but finite: stored as is
         ray{vec3(std::nextafter(1.0f, 2.0f)), vec3(3.0f, -4.0f, 5.0f), -1.0f, std::numeric_limits<float>::max()},
     };
@@ -142,7 +142,7 @@ TEST_CASE("ch16 ray_io: the bytes on disk are the documented layout", "[ch16][ra
     CHECK(rb[8] == 4);
     for (int k = 9; k < 16; ++k) CHECK(rb[k] == 0);
     // Ray 1 (the second record): ox oy oz tmin dx dy dz tmax, float32 each.
-    const float expect[8] = {-0.0f, 1e-30f, -7e20f, 1e-4f, -1.0f, 0.0f, 0.0f, 12.5f};
+    const float expect[8] = {-0.0f, 1e-30f, -7e11f, 1e-4f, -1.0f, 0.0f, 0.0f, 12.5f};
     for (int k = 0; k < 8; ++k) {
         INFO("field " << k);
         float f;
@@ -255,6 +255,15 @@ TEST_CASE("ch16 ray_io: NaN and infinities in rays are refused, naming ray and f
         fs::copy_file(dir / "good.bin", dir / "bad.bin", fs::copy_options::overwrite_existing);
         patch_float(dir / "bad.bin", 16 + 32 * std::size_t(c.ray) + 4 * std::size_t(c.field), c.value);
         refused(read_r, dir / "bad.bin", {"bad.bin", "ray " + std::to_string(c.ray), std::string(" ") + c.name + " ="});
+    }
+    // Beyond the course's range (max_coordinate): refused, saying why; at the range's edge, read.
+    for (const auto& [field, name] : {std::pair{0, "ox"}, {2, "oz"}, {4, "dx"}, {6, "dz"}}) {
+        INFO(name);
+        fs::copy_file(dir / "good.bin", dir / "far.bin", fs::copy_options::overwrite_existing);
+        patch_float(dir / "far.bin", 16 + 32 + 4 * std::size_t(field), -2e12f);
+        refused(read_r, dir / "far.bin", {"far.bin", "ray 1", std::string(" ") + name + " =", "beyond +-1e12"});
+        patch_float(dir / "far.bin", 16 + 32 + 4 * std::size_t(field), max_coordinate);
+        CHECK(read_rays(dir / "far.bin").size() == some_rays().size());
     }
     // The one infinity allowed: tmax = +inf (ray 0 has it already; give it to ray 3 too).
     fs::copy_file(dir / "good.bin", dir / "inf.bin", fs::copy_options::overwrite_existing);

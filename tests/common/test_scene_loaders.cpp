@@ -431,8 +431,13 @@ TEST_CASE("scene loader: whole numbers of 20 or more digits in OBJ are read righ
     const auto dir = test::scratch_dir("scene_loader_obj_digits");
     const std::string rest = "v 0 1 0\nv 0 0 1\nf 1 2 3\n";
     // Up to 19 digits and exponents are fine.
-    CHECK(load_mesh(write_file(dir, "e20.obj", "v 1e20 0 0\n" + rest)).bounds().max.x == 1e20f);
-    CHECK(load_mesh(write_file(dir, "digits19.obj", "v 1000000000000000000 0 0\n" + rest)).bounds().max.x == 1e18f);
+    CHECK(load_mesh(write_file(dir, "e11.obj", "v 1e11 0 0\n" + rest)).bounds().max.x == 1e11f);
+    CHECK(load_mesh(write_file(dir, "digits12.obj", "v 100000000000 0 0\n" + rest)).bounds().max.x == 1e11f);
+    // Beyond the course's range (max_coordinate, 1e12) the triangle tests overflow: refused, saying so.
+    CHECK_THROWS_WITH(load_mesh(write_file(dir, "e20.obj", "v 1e20 0 0\n" + rest)),
+                      Contains("e20.obj") && Contains("beyond +-1e12") && Contains("overflow"));
+    CHECK_THROWS_WITH(load_mesh(write_file(dir, "digits19.obj", "v 1000000000000000000 0 0\n" + rest)),
+                      Contains("beyond +-1e12"));
     // assimp's reader gives 0 for some (its integer overflows), a wrapped value for others (3e19 as 1.16e19).
     const std::pair<const char*, float> numbers[] = {
         {"100000000000000000000", 1e20f}, {"-30000000000000000000", -3e19f}, {"100000000000000000000.5", 1e20f}};

@@ -1,5 +1,6 @@
 #include "strahl/race/ray_io.hpp"
 #include <bit>
+#include <charconv>
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -66,6 +67,14 @@ void write_rays(const std::filesystem::path& file, std::span<const ray> rays) {
     write_file(file, ray_magic, rays.size(), payload);
 }
 
+namespace {
+std::string shortest(float x) {
+    char buf[32];
+    const auto end = std::to_chars(buf, buf + sizeof buf, x).ptr;
+    return std::string(buf, end);
+}
+}  // namespace
+
 std::vector<ray> read_rays(const std::filesystem::path& file) {
     std::uint64_t count = 0;
     const std::vector<char> data = read_file(file, ray_magic, ray_bytes, count);
@@ -80,6 +89,12 @@ std::vector<ray> read_rays(const std::filesystem::path& file) {
                 throw format_error("'" + file.string() + "': ray " + std::to_string(i) + " has " + fields[k] + " = " +
                                    std::to_string(f[k]) + (k == 7 ? " (tmax may be +inf, never NaN)" : " (must be finite)"));
         }
+        for (int k : {0, 1, 2, 4, 5, 6})
+            if (std::abs(f[k]) > max_coordinate)
+                throw format_error("'" + file.string() + "': ray " + std::to_string(i) + " has " + fields[k] + " = " +
+                                   shortest(f[k]) + ", beyond +-1e12, the largest coordinate the course "
+                                   "accepts (the triangle tests multiply three lengths, which overflow float above "
+                                   "about 7e12)");
         rays[i] = ray{vec3(f[0], f[1], f[2]), vec3(f[4], f[5], f[6]), f[3], f[7]};
     }
     return rays;

@@ -104,8 +104,15 @@ public:
 // any vertex, beyond the last vertex; a glTF face assimp would drop), NaN or Inf in a referenced vertex, an
 // OBJ vertex line without three numbers or with a whole number of more than 64 bits, a polygon of more
 // than 1,000 corners, a glTF whose nodes nest more than 1,000 deep or form a cycle, a GLB whose lengths
-// exceed the file, a file assimp cannot read, and a file with no triangles.
+// exceed the file, a file assimp cannot read, a file with no triangles, and a coordinate beyond
+// max_coordinate.
 triangle_mesh load_mesh(const std::filesystem::path& file, std::ostream* log = nullptr);
+
+// The largest coordinate (in magnitude) the course accepts, in a scene or a ray file's origins and
+// directions. The triangle tests multiply three lengths (Moeller-Trumbore's t = e2 . (s x e1) / det):
+// with edges and the origin's offset of about 7e12, that product passes float's largest value, 3.4e38,
+// and every hit is lost. Within +-1e12 the largest product stays below 5e37.
+inline constexpr float max_coordinate = 1e12f;
 
 // load_mesh plus what a render needs: one diffuse material, a camera framing the mesh from the front
 // (+z looking at -z) and a point light near the camera. Meshes whose front view says little have a view

@@ -8,9 +8,10 @@
 //
 // Reading refuses, with a message naming the file and the first offending record: a wrong magic, a count
 // that disagrees with the file's size, NaN anywhere, an infinite origin, direction or tmin (tmax may be
-// +inf), a hit with infinite t but a primitive id (or the reverse), a flag other than 0 or 1.
+// +inf), an origin or direction component beyond max_coordinate (1e12, scene.hpp), a hit with infinite t but a primitive id (or the reverse), a flag other than 0 or 1.
 #pragma once
 #include "strahl/ray.hpp"
+#include "strahl/scene.hpp"
 #include <filesystem>
 #include <span>
 #include <stdexcept>
