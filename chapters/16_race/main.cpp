@@ -12,6 +12,7 @@
 #include "strahl/race/report.hpp"
 #include "strahl/timer.hpp"
 #include <algorithm>
+#include <map>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -219,6 +220,19 @@ int run(int argc, const char* const* argv) {
         // read from the cache of an earlier run (whose files are spot-checked by brute force).
         reference_cache cache(args.has("no-cache") ? std::filesystem::path() : cache_dir, s, exact,
                               ref_threads);
+        // Other oracles (brute force with chapter 15's triangle tests), made when a row first needs one.
+        std::map<std::string, std::pair<std::unique_ptr<accel>, std::unique_ptr<reference_cache>>> oracles;
+        const auto oracle_cache = [&](const std::string& name) -> reference_cache& {
+            auto it = oracles.find(name);
+            if (it == oracles.end()) {
+                std::unique_ptr<accel> a = find_accel(name).make();
+                a->build(s);
+                auto c = std::make_unique<reference_cache>(args.has("no-cache") ? std::filesystem::path() : cache_dir,
+                                                           s, *a, ref_threads);
+                it = oracles.emplace(name, std::pair{std::move(a), std::move(c)}).first;
+            }
+            return *it->second.second;
+        };
         const std::vector<ray> primary = primary_rays(s, w, h);
         const std::vector<hit> primary_hits = cache.closest("primary", primary);
         write_image(out / (std::filesystem::path(scene_name).stem().string() + ".png"),
@@ -235,6 +249,7 @@ int run(int argc, const char* const* argv) {
             // Linear-cost structures (brute force) on big scenes trace an evenly spread sample of the rays:
             // at most 5e8 triangle tests a run.
             const std::size_t linear_limit = std::max<std::size_t>(256, std::size_t(5e8 / double(std::max<std::size_t>(1, s.mesh.triangle_count()))));
+            std::map<std::string, reference> other_refs;  // by oracle
             for (const accel_entry& e : entries) {
                 const bool packet = e.name.find("packet8") != std::string::npos;
                 if (packet && kind != ray_kind::primary) {
@@ -252,6 +267,13 @@ int run(int argc, const char* const* argv) {
                 r.build_ms = measure_build(*a, s, rules);
                 r.memory_bytes = a->memory_bytes();
                 r.sah = a->sah_cost();
+                if (e.oracle != "brute" && !other_refs.count(e.oracle)) {
+                    reference_cache& c = oracle_cache(e.oracle);
+                    other_refs[e.oracle] = reference{kind == ray_kind::shadow ? std::vector<hit>()
+                                                                              : c.closest(to_string(kind), rays),
+                                                     c.any(to_string(kind), rays)};
+                }
+                const reference& base = e.oracle == "brute" ? ref : other_refs.at(e.oracle);
                 std::span<const ray> traced = rays;
                 reference sub;
                 std::vector<ray> sampled;
@@ -259,13 +281,13 @@ int run(int argc, const char* const* argv) {
                     const std::size_t stride = (rays.size() + linear_limit - 1) / linear_limit;
                     for (std::size_t i = 0; i < rays.size(); i += stride) {
                         sampled.push_back(rays[i]);
-                        if (!ref.closest.empty()) sub.closest.push_back(ref.closest[i]);
-                        sub.any.push_back(ref.any[i]);
+                        if (!base.closest.empty()) sub.closest.push_back(base.closest[i]);
+                        sub.any.push_back(base.any[i]);
                     }
                     traced = sampled;
                     r.ray_set += "~";  // marks a sampled row in the table
                 }
-                const reference& compare = sampled.empty() ? ref : sub;
+                const reference& compare = sampled.empty() ? base : sub;
                 // Shadow rays ask for any hit only; Embree's packets are timed on primary rays, closest hit.
                 if (!packet) r.any = measure_any(*a, traced, compare.any, rules);
                 if (kind != ray_kind::shadow) r.closest = measure_closest(*a, traced, compare.closest, rules);
@@ -274,6 +296,8 @@ int run(int argc, const char* const* argv) {
             }
         }
         cached_sets[0] += cache.loaded(), cached_sets[1] += cache.traced(), cached_sets[2] += cache.stale();
+        for (const auto& [name, o] : oracles)
+            cached_sets[0] += o.second->loaded(), cached_sets[1] += o.second->traced(), cached_sets[2] += o.second->stale();
     }
     progress.finish();
     if (!args.has("no-cache")) {

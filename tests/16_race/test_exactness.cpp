@@ -34,11 +34,24 @@ void check_exact_structures(const scene& s, int width, int height,
         if (!a->exact()) continue;
         ++exact_count;
         CHECK(a->name() == e.name);
-        if (e.name == "brute") continue;  // the reference itself
+        if (e.name == "brute" || e.name == e.oracle) continue;  // a reference itself
         a->build(s);
-        for (const test::reference_set& r : sets) {
+        // A structure with another oracle (brute force with chapter 15's tests) is checked against that
+        // oracle's answers on the same rays.
+        std::vector<test::reference_set> own;
+        if (e.oracle != "brute") {
+            std::unique_ptr<accel> oracle = find_accel(e.oracle).make();
+            oracle->build(s);
+            for (const test::reference_set& r : sets) {
+                test::reference_set o{r.kind, r.rays, std::vector<hit>(r.rays.size()), std::vector<std::uint8_t>(r.rays.size())};
+                test::closest_in_parallel(*oracle, o.rays, o.closest);
+                test::any_in_parallel(*oracle, o.rays, o.any);
+                own.push_back(std::move(o));
+            }
+        }
+        for (const test::reference_set& r : e.oracle == "brute" ? sets : own) {
             INFO("scene " << s.name << " (" << s.mesh.triangle_count() << " triangles), structure " << e.name
-                          << ", " << to_string(r.kind) << " rays (" << r.rays.size() << ")");
+                          << " against " << e.oracle << ", " << to_string(r.kind) << " rays (" << r.rays.size() << ")");
             // In batches of 64 consecutive rays, in parallel: each batch is the structure's own loop.
             std::vector<hit> hits(r.rays.size());
             std::vector<std::uint8_t> blocked(r.rays.size(), 7);
@@ -216,4 +229,20 @@ TEST_CASE("ch16 exactness: the course's range holds at its edge (max_coordinate)
     scene s = mesh_scene("octahedron_at_the_range", octahedron);
     s.camera = camera_desc{vec3(1.0f, 0.6f, 0.8f) * m, vec3(0.0f), vec3(0, 1, 0), 90.0f};
     check_exact_structures(s, 24, 18);
+}
+
+TEST_CASE("ch16 exactness: chapter 15's combinations, found by name, equal their oracles", "[ch16][exactness]") {
+    std::vector<accel_entry> entries;
+    for (const char* name : {"brute", "ch15-watertight-conservative", "ch15-watertight-double-fast",
+                             "ch15-mt-epsilon-fast", "ch15-mt-edges-conservative", "ch15-watertight-double-conservative"}) {
+        INFO(name);
+        entries.push_back(find_accel(name));
+        CHECK(entries.back().chapter == (entries.size() == 1 ? "16" : "15"));
+    }
+    CHECK(find_accel("ch15-watertight-fast").oracle == "brute-watertight");
+    CHECK(find_accel("ch15-mt-edges-plain").oracle == "brute");
+    CHECK_FALSE(find_accel("ch15-mt-plain").make()->exact());
+    CHECK_THROWS_WITH(find_accel("ch15-watertight-slow"), Catch::Contains("ch15-TEST-BOX"));
+    check_exact_structures(builtin_scene("teapot"), 48, 32, entries);
+    check_exact_structures(mesh_scene("dense_soup", random_soup(3000, 42, 0.2f)), 40, 30, entries);
 }

@@ -151,7 +151,7 @@ std::vector<std::pair<std::filesystem::path, std::optional<std::uint64_t>>> cand
 
 }  // namespace
 
-reference_cache::reference_cache(std::filesystem::path folder, const scene& s, const brute_force& exact, int threads)
+reference_cache::reference_cache(std::filesystem::path folder, const scene& s, const accel& exact, int threads)
     : folder_(std::move(folder)), exact_(exact), threads_(threads) {
     // The file names start with the scene's name, made safe for a file name.
     stem_ = std::filesystem::path(s.name).stem().string();
@@ -160,6 +160,10 @@ reference_cache::reference_cache(std::filesystem::path folder, const scene& s, c
     if (stem_.empty()) stem_ = "scene";
     fnv1a h;
     h.add(std::string("strahl brute-force reference, format 1"));
+    if (exact.name() != "brute") {
+        stem_ += "_" + exact.name();
+        h.add(exact.name());
+    }
     h.add(std::uint32_t(s.mesh.triangle_count()));
     for (std::size_t i = 0; i < s.mesh.triangle_count(); ++i)
         for (const vec3& v : s.mesh.triangle(i)) h.add(v);

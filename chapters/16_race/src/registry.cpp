@@ -9,6 +9,7 @@
 #include "strahl/ch06/accel.hpp"
 #include "strahl/ch11/steps.hpp"
 #include "strahl/ch13/accel.hpp"
+#include "strahl/ch15/accel.hpp"
 #include <optional>
 #include <stdexcept>
 
@@ -96,6 +97,12 @@ std::vector<accel_entry> registered_accels(const registry_options& o) {
         wide("ch13-bvh16", "16-wide nodes (optimal collapse), blocks of 4", 16, 4, ch13::collapse_method::optimal),
         wide("ch13-bvh8-reinserted", "chapter 06's reinserted tree collapsed into 8-wide nodes (optimal), blocks of 4",
              8, 4, ch13::collapse_method::optimal, true),
+        {"ch15-mt-fast", "15", "chapter 05's binned SAH tree and fast walk, Moeller-Trumbore: chapter 15's baseline",
+         [] { return ch15::make_tree(ch15::test_kind::mt, ch15::box_kind::fast); }},
+        {"ch15-watertight-fast", "15", "the same tree and walk with the watertight test (Woop, Benthin and Wald 2013)",
+         [] { return ch15::make_tree(ch15::test_kind::watertight, ch15::box_kind::fast); }, false, "brute-watertight"},
+        {"brute-watertight", "15", "brute force with the watertight test: the oracle of chapter 15's watertight rows",
+         [] { return ch15::make_brute(ch15::test_kind::watertight); }, true, "brute-watertight"},
         // Later chapters register here, one line each.
     };
     if (embree_available()) {
@@ -109,6 +116,25 @@ std::vector<accel_entry> registered_accels(const registry_options& o) {
                             [o] { return make_embree_accel({q::medium, o.packet_width, o.threads}); }});
     }
     return list;
+}
+
+// ch15-TEST-BOX and brute-TEST (registry.hpp); else nothing.
+std::optional<accel_entry> ch15_by_name(const std::string& name) {
+    for (const ch15::test_kind k : ch15::all_tests) {
+        const std::string test = ch15::name(k);
+        // Exercise 01.3's test and 11.2's form of it give brute force's answers bit for bit.
+        const bool same_as_brute = k == ch15::test_kind::mt || k == ch15::test_kind::mt_edges;
+        const std::string oracle = same_as_brute ? "brute" : "brute-" + test;
+        if (name == "brute-" + test)
+            return accel_entry{name, "15", std::string("brute force with chapter 15's test: ") + ch15::describe(k),
+                               [k] { return ch15::make_brute(k); }, true, "brute-" + test};
+        for (const ch15::box_kind b : ch15::all_boxes)
+            if (name == "ch15-" + test + "-" + ch15::name(b))
+                return accel_entry{name, "15", std::string("chapter 05's tree, ") + ch15::describe(k) + ", box test " +
+                                                   ch15::name(b),
+                                   [k, b] { return ch15::make_tree(k, b); }, false, oracle};
+    }
+    return std::nullopt;
 }
 
 // ch05-binnedK or ch05-binnedK-fast for K in [2, 256], written without sign or leading zeros; else nothing.
@@ -138,8 +164,11 @@ accel_entry find_accel(const std::string& name, const registry_options& options)
         names += (names.empty() ? "" : ", ") + e.name;
     }
     if (std::optional<accel_entry> e = binned_by_name(name)) return *e;
+    if (std::optional<accel_entry> e = ch15_by_name(name)) return *e;
     throw std::invalid_argument("no structure named '" + name + "' (have: " + names +
-                                "; and ch05-binnedK, ch05-binnedK-fast for K in 2..256)");
+                                "; and ch05-binnedK, ch05-binnedK-fast for K in 2..256; ch15-TEST-BOX and brute-TEST "
+                                "for chapter 15's tests mt, mt-epsilon, mt-edges, watertight, watertight-double and "
+                                "boxes plain, conservative, fast)");
 }
 
 }  // namespace strahl::race

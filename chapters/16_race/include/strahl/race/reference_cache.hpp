@@ -25,8 +25,10 @@ namespace strahl::race {
 class reference_cache {
 public:
     // `folder`: where the files go (created when first needed); empty: no cache, every answer traced.
-    // `exact` must have been built on `s`; `threads` trace the reference.
-    reference_cache(std::filesystem::path folder, const scene& s, const brute_force& exact, int threads);
+    // `exact` (brute force, or brute force with another triangle test: an oracle) must have been built on
+    // `s`; `threads` trace the reference. An oracle other than "brute" has its name in the file names and
+    // in the hash, so the answers of two triangle tests never mix.
+    reference_cache(std::filesystem::path folder, const scene& s, const accel& exact, int threads);
 
     // The answers of brute force for `rays` (`set` names them in the file name, for people reading the
     // folder): from the cache when a file is there, its checksum holds and its sample agrees, else traced
@@ -56,7 +58,7 @@ private:
     std::filesystem::path folder_;
     std::string stem_;
     std::uint64_t scene_hash_ = 0;
-    const brute_force& exact_;
+    const accel& exact_;
     int threads_ = 1, loaded_ = 0, traced_ = 0, stale_ = 0;
 };
 
