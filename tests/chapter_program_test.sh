@@ -48,6 +48,8 @@ case $nn in
     sized=(render.png:"32 32") ;;
 13) args=(--quick --width 32 --repeats 1 --out "$out") files=(wide.csv speedup.svg)
     sized=() ;;
+15) args=(--quick --out "$out") files=(escapes.csv spawn.csv table.csv escape_vs_speed.svg)
+    sized=() ;;
 *) echo "$0: no end-to-end run known for chapter $nn" >&2; exit 2 ;;
 esac
 
@@ -180,6 +182,23 @@ if [[ $nn == 11 ]]; then
     contains "$dir/from_race/staircase.svg" "type-sorted" "--from-race's plot"
     runs "--from-race of a foreign file" 1 "$program" --from-race "$out/steps.csv" --out "$dir/from_race2"
     contains "$dir/err" "is not a race.csv written by the race" "--from-race of a foreign file"
+fi
+
+# Chapter 15: no ray escapes the watertight test (float or double) in brute force or in a tree walked with a
+# conservative or the fast box test; the table has a row per test and box; spawn.csv a row per offset and
+# placement (8 placements x 4 offsets); --scenes refuses a scene that is not there.
+if [[ $nn == 15 ]]; then
+    bad=$(awk -F, 'NR > 1 && ($6 == "watertight" || $6 == "watertight-double") && $7 != "plain" && $10 != 0' \
+        "$out/escapes.csv")
+    [[ -z $bad ]] || fail "escapes.csv: the watertight test lets rays escape in: $bad"
+    [[ $(awk -F, 'NR > 1 && $6 == "watertight" && $7 == "fast"' "$out/escapes.csv" | wc -l) -gt 0 ]] ||
+        fail "escapes.csv: no rows for the watertight test in the fast walk"
+    [[ $(tail -n +2 "$out/table.csv" | wc -l) -eq 15 ]] || fail "table.csv has not 15 rows (5 tests x 3 box tests)"
+    [[ $(tail -n +2 "$out/spawn.csv" | wc -l) -eq 32 ]] || fail "spawn.csv has not 32 rows (8 placements x 4 offsets)"
+    contains "$dir/out" "escapes per million" "the quick run's output"
+    runs "--scenes of a missing file" 2 "$program" --quick --scenes "$dir/no_such.ply" --out "$dir/never"
+    contains "$dir/err" "--scenes: no file" "--scenes of a missing file"
+    [[ ! -e $dir/never ]] || fail "--scenes of a missing file: --out $dir/never was created"
 fi
 
 # Nothing is overwritten unless asked: the same run again is refused and leaves the files as they were.
