@@ -6,6 +6,7 @@
 #include "strahl/procedural.hpp"
 #include "bvh_rays.hpp"
 #include "exactness.hpp"
+#include "test_support.hpp"
 #include <catch2/catch.hpp>
 
 using namespace strahl;
@@ -76,10 +77,12 @@ TEST_CASE("ch15 structures: every triangle test in chapter 05's fast walk equals
     scenes.back().name = "soup";
     scenes.push_back(test::mesh_only(placed_sphere(24, 48, 1.0f, vec3(0))));
     scenes.back().name = "sphere";
+    // Under the sanitizers (ten times slower) a third of the rays: the release run has them all.
+    const std::size_t nasty = test::under_sanitizers ? 1000 : 3000;
     for (const scene& s : scenes) {
         robust_bvh<test_kind::mt, box_kind::fast> t;
         t.build(s);
-        std::vector<ray> rays = test::nasty_rays(t.tree(), 3000, 15);
+        std::vector<ray> rays = test::nasty_rays(t.tree(), nasty, 15);
         const std::vector<ray> aimed = aimed_rays(s.mesh, s.mesh.bounds().centroid() + vec3(0.01f, -0.02f, 0.005f));
         rays.insert(rays.end(), aimed.begin(), aimed.end());
         check_exact<test_kind::mt>(s, rays);
@@ -98,6 +101,7 @@ TEST_CASE("ch15 structures: no ray escapes the watertight tree, at every scale a
     for (const float place : {0.0f, 1e5f, 1e7f})
         for (const float scale : {1e-6f, 1e-3f, 1.0f, 1e3f, 1e7f}) {
             if (place > 0.0f && scale < place * 0x1p-12f) continue;
+            if (test::under_sanitizers && scale != 1e-6f && scale != 1e7f) continue;  // the extremes only
             const vec3 at = vec3(0.6f, -0.3f, 0.74f) * place;
             scene s = test::mesh_only(placed_sphere(24, 48, scale, at));
             const std::vector<ray> rays = aimed_rays(s.mesh, at + vec3(0.013f, -0.021f, 0.007f) * scale);
@@ -113,7 +117,7 @@ TEST_CASE("ch15 structures: no ray escapes the watertight tree, at every scale a
             mt_escapes += escapes(mt, rays);
             ++cases;
         }
-    CHECK(cases == 8);
+    CHECK(cases == (test::under_sanitizers ? 4 : 8));
     CHECK(mt_escapes > 0);     // Moeller-Trumbore's cracks show in the same cases,
     CHECK(plain_escapes > 0);  // and the plain box test's: rays through a box's edge or corner miss it
 }
