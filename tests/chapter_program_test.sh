@@ -194,7 +194,7 @@ if [[ $nn == 15 ]]; then
     [[ $(awk -F, 'NR > 1 && $6 == "watertight" && $7 == "fast"' "$out/escapes.csv" | wc -l) -gt 0 ]] ||
         fail "escapes.csv: no rows for the watertight test in the fast walk"
     [[ $(tail -n +2 "$out/table.csv" | wc -l) -eq 15 ]] || fail "table.csv has not 15 rows (5 tests x 3 box tests)"
-    [[ $(tail -n +2 "$out/spawn.csv" | wc -l) -eq 32 ]] || fail "spawn.csv has not 32 rows (8 placements x 4 offsets)"
+    [[ $(tail -n +2 "$out/spawn.csv" | wc -l) -eq 52 ]] || fail "spawn.csv has not 52 rows (13 placements x 4 offsets)"
     contains "$dir/out" "escapes per million" "the quick run's output"
     runs "--scenes of a missing file" 2 "$program" --quick --scenes "$dir/no_such.ply" --out "$dir/never"
     contains "$dir/err" "--scenes: no file" "--scenes of a missing file"

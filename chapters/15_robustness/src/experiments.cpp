@@ -15,7 +15,7 @@ vec3 placement::inside() const { return centre() + vec3(0.013f, -0.021f, 0.007f)
 
 std::vector<placement> all_placements() {
     std::vector<placement> out;
-    for (const float place : {0.0f, 1e5f, 1e7f})
+    for (const float place : {0.0f, 1e3f, 1e5f, 1e6f, 1e7f})
         for (const float scale : {1e-6f, 1e-3f, 1.0f, 1e3f, 1e7f}) out.push_back({scale, place});
     return out;
 }

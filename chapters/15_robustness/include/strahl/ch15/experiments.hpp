@@ -24,7 +24,7 @@ struct placement {
 };
 vec3 placement_direction();  // normalize(0.6, -0.3, 0.74)
 
-// The scales 1e-6, 1e-3, 1, 1e3, 1e7 at the distances 0, 1e5, 1e7 (all 15; see representable()).
+// The scales 1e-6, 1e-3, 1, 1e3, 1e7 at the distances 0, 1e3, 1e5, 1e6, 1e7 (all 25; see representable()).
 std::vector<placement> all_placements();
 
 // tessellated_sphere(stacks, slices), scaled and moved to p.
