@@ -36,9 +36,9 @@ accel_entry ch11_step(ch11::step s) {
 }
 // Chapter 13: chapter 05's fast binned tree (or chapter 06's reinserted one) collapsed into a wide tree.
 accel_entry wide(std::string name, std::string description, int width, int block, ch13::collapse_method method,
-                 bool reinserted = false) {
+                 bool reinserted = false, bool watertight = false) {
     ch13::wide_config c;
-    c.width = width, c.block = block, c.collapse.method = method;
+    c.width = width, c.block = block, c.collapse.method = method, c.watertight = watertight;
     const ch04::bvh_builder source = reinserted
         ? ch04::bvh_builder([](std::span<const aabb> b, std::span<const vec3> centroids) {
               return ch06::build_refined_bvh(b, centroids, refined(ch06::start_tree::binned16, ch06::refine_method::reinsertion));
@@ -101,6 +101,13 @@ std::vector<accel_entry> registered_accels(const registry_options& o) {
          [] { return ch15::make_tree(ch15::test_kind::mt, ch15::box_kind::fast); }},
         {"ch15-watertight-fast", "15", "the same tree and walk with the watertight test (Woop, Benthin and Wald 2013)",
          [] { return ch15::make_tree(ch15::test_kind::watertight, ch15::box_kind::fast); }, false, "brute-watertight"},
+        [] {
+            accel_entry e = wide("ch15-watertight-bvh16", "chapter 13's 16-wide BVH (optimal collapse, blocks of 4) with "
+                                 "the watertight test on 4 lanes", 16, 4, ch13::collapse_method::optimal, false, true);
+            e.chapter = "15";
+            e.oracle = "brute-watertight";
+            return e;
+        }(),
         {"brute-watertight", "15", "brute force with the watertight test: the oracle of chapter 15's watertight rows",
          [] { return ch15::make_brute(ch15::test_kind::watertight); }, true, "brute-watertight"},
         // Later chapters register here, one line each.

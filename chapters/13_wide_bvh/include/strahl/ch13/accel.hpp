@@ -15,6 +15,8 @@ struct wide_config {
     collapse_config collapse;
     bool any_hit_nearest = false;  // any hit: visit the nearest child first (as closest hit does), or the
                                    // children in stored order (the default: no sorting)
+    bool watertight = false;       // chapter 15's watertight test in the leaves (width 8 or 16, blocks of 4)
+                                   // instead of Moeller-Trumbore
 };
 
 // The widths this build runs with intrinsics (simd::native), for the programs' headers: "SSE2 4, AVX 8, ...".

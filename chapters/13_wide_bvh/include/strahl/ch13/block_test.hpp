@@ -4,10 +4,16 @@
 // in glm's order), so a lane's t, u and v are the scalar test's bits and the wide BVH answers exactly what
 // brute force answers. Only the early exits are gone: every lane runs to the end, and a mask says which
 // lanes hit.
+//
+// Below it, chapter 15's watertight test on M lanes (S. Woop, C. Benthin and I. Wald, "Watertight ray/
+// triangle intersection", JCGT 2013), step for step as exercise 15.2 writes it, so that its lanes equal
+// brute force with that test bit for bit.
 #pragma once
 #include "strahl/ch13/wide_bvh.hpp"
 #include "strahl/ray.hpp"
 #include "strahl/simd.hpp"
+#include <bit>
+#include <utility>
 
 namespace strahl::ch13 {
 
@@ -48,6 +54,75 @@ template <int M>
     const vf bt = (e2x * qx + e2y * qy + e2z * qz) * inv_det;
     hit = hit & (bt > vf(tmin)) & (bt < vf(tmax));
     t = bt, u = bu, v = bv;
+    return hit;
+}
+
+// The watertight test needs the corners themselves (v0 + e1 rounds: it is not v1): v[corner][axis][lane],
+// filled from the ids of the tree's triangle_block of the same index.
+template <int M>
+struct alignas(64) vertex_block {
+    float v[3][3][M];
+};
+
+// The ray moved to the origin and sheared onto +z, once per ray: exercise 15.1's permutation and shear.
+template <int M>
+struct shear_lanes {
+    using vf = simd::vfloat<M>;
+    int kx = 0, ky = 1, kz = 2;
+    vf org[3], sx, sy, sz;
+    explicit shear_lanes(const ray& r) {
+        const vec3 a = glm::abs(r.dir);
+        kz = a.x >= a.y ? (a.x >= a.z ? 0 : 2) : (a.y >= a.z ? 1 : 2);
+        kx = (kz + 1) % 3;
+        ky = (kx + 1) % 3;
+        if (r.dir[kz] < 0.0f) std::swap(kx, ky);
+        sx = vf(r.dir[kx] / r.dir[kz]), sy = vf(r.dir[ky] / r.dir[kz]), sz = vf(1.0f / r.dir[kz]);
+        for (int k = 0; k < 3; ++k) org[k] = vf(r.org[k]);
+    }
+};
+
+// Which lanes of block b the ray hits with t in (tmin, tmax); their t, u, v. Steps a to e of exercise 15.2.
+template <int M>
+[[gnu::always_inline]] inline simd::vmask<M> intersect_block_watertight(const vertex_block<M>& b,
+                                                                        const shear_lanes<M>& s, float tmin,
+                                                                        float tmax, simd::vfloat<M>& t,
+                                                                        simd::vfloat<M>& u, simd::vfloat<M>& v) {
+    using vf = simd::vfloat<M>;
+    // a. The corners relative to the origin (only the three axes the shear uses), sheared in x and y.
+    const auto rel = [&](int corner, int axis) { return vf::load(b.v[corner][axis]) - s.org[axis]; };
+    const vf akx = rel(0, s.kx), aky = rel(0, s.ky), akz = rel(0, s.kz);
+    const vf bkx = rel(1, s.kx), bky = rel(1, s.ky), bkz = rel(1, s.kz);
+    const vf ckx = rel(2, s.kx), cky = rel(2, s.ky), ckz = rel(2, s.kz);
+    const vf ax = akx - s.sx * akz, ay = aky - s.sy * akz;
+    const vf bx = bkx - s.sx * bkz, by = bky - s.sy * bkz;
+    const vf cx = ckx - s.sx * ckz, cy = cky - s.sy * ckz;
+    // b. The edge functions; lanes where one is exactly 0 again in double (rare: a lane at a time).
+    vf eu = cx * by - cy * bx, ev = ax * cy - ay * cx, ew = bx * ay - by * ax;
+    const vf zero(0.0f);
+    if (unsigned z = simd::movemask((eu == zero) | (ev == zero) | (ew == zero))) {
+        alignas(64) float x[6][M], e[3][M];
+        ax.store(x[0]), ay.store(x[1]), bx.store(x[2]), by.store(x[3]), cx.store(x[4]), cy.store(x[5]);
+        eu.store(e[0]), ev.store(e[1]), ew.store(e[2]);
+        for (; z != 0; z &= z - 1) {
+            const int i = std::countr_zero(z);
+            const double dax = x[0][i], day = x[1][i], dbx = x[2][i], dby = x[3][i], dcx = x[4][i], dcy = x[5][i];
+            e[0][i] = float(dcx * dby - dcy * dbx);
+            e[1][i] = float(dax * dcy - day * dcx);
+            e[2][i] = float(dbx * day - dby * dax);
+        }
+        eu = vf::load(e[0]), ev = vf::load(e[1]), ew = vf::load(e[2]);
+    }
+    // c. Mixed signs: outside; det = 0 or NaN: no hit.
+    const simd::vmask<M> negative = (eu < zero) | (ev < zero) | (ew < zero);
+    const simd::vmask<M> positive = (zero < eu) | (zero < ev) | (zero < ew);
+    const vf det = eu + ev + ew;
+    simd::vmask<M> hit = ~(negative & positive) & ((det < zero) | (zero < det));
+    // d. The sheared depths and T; e. t = T / det in (tmin, tmax), u and v.
+    const vf az = s.sz * akz, bz = s.sz * bkz, cz = s.sz * ckz;
+    const vf big_t = eu * az + ev * bz + ew * cz;
+    const vf tt = big_t / det;
+    hit = hit & (vf(tmin) < tt) & (tt < vf(tmax));
+    t = tt, u = ev / det, v = ew / det;
     return hit;
 }
 

@@ -10,13 +10,50 @@
 #include "strahl/ch13/wide_traverse.hpp"
 #include "strahl/tree_query.hpp"
 #include <stdexcept>
+#include <type_traits>
+#include <vector>
 
 namespace strahl::ch13 {
 
 namespace {
 
-template <int N, int M>
-class wide_accel final : public per_ray_accel<wide_accel<N, M>, wide_accel_base> {
+// Chapter 15's watertight test on single triangles, for what the tree does not hold (loose primitives, rays
+// no tree can place): a block whose lanes all hold the one triangle, through the lane test, so these
+// answers are the lanes' bits too.
+template <int M>
+class watertight_lane_set {
+public:
+    explicit watertight_lane_set(const triangle_mesh& mesh) : mesh_(&mesh) {}
+    std::size_t size() const { return mesh_->triangle_count(); }
+    bool intersect(std::uint32_t i, ray& r, hit& best) const {
+        float t, u, v;
+        return test(i, r, t, u, v) && ch01::record_closest(i, t, u, v, r, best);
+    }
+    bool occludes(std::uint32_t i, const ray& r) const {
+        float t, u, v;
+        return test(i, r, t, u, v);
+    }
+
+private:
+    bool test(std::uint32_t i, const ray& r, float& t, float& u, float& v) const {
+        vertex_block<M> b;
+        const auto p = mesh_->triangle(i);
+        for (int c = 0; c < 3; ++c)
+            for (int a = 0; a < 3; ++a)
+                for (int lane = 0; lane < M; ++lane) b.v[c][a][lane] = p[c][a];
+        simd::vfloat<M> tl, ul, vl;
+        if (!(simd::movemask(intersect_block_watertight(b, shear_lanes<M>(r), r.tmin, r.tmax, tl, ul, vl)) & 1u))
+            return false;
+        t = tl[0], u = ul[0], v = vl[0];
+        return true;
+    }
+    const triangle_mesh* mesh_;
+};
+
+// Watertight: the leaves' blocks tested by chapter 15's watertight test (on the corners, vertex_block),
+// else by Moeller-Trumbore (on the edges, triangle_block).
+template <int N, int M, bool Watertight = false>
+class wide_accel final : public per_ray_accel<wide_accel<N, M, Watertight>, wide_accel_base> {
 public:
     wide_accel(std::string name, ch04::bvh_builder builder, const wide_config& c)
         : name_(std::move(name)), builder_(std::move(builder)), config_(c.collapse), any_nearest_(c.any_hit_nearest) {}
@@ -32,26 +69,39 @@ public:
         for (std::size_t i = 0; i < boxes.size(); ++i) boxes[i] = set_->bounds(i), centroids[i] = boxes[i].centroid();
         binary_ = builder_(boxes, centroids);
         tree_ = collapse<N, M>(binary_, s.mesh, config_);
+        if constexpr (Watertight) {
+            mesh_ = s.mesh;
+            lane_set_ = std::make_unique<watertight_lane_set<M>>(mesh_);
+            corners_.resize(tree_.blocks.size());
+            for (std::size_t k = 0; k < corners_.size(); ++k)
+                for (int lane = 0; lane < M; ++lane) {
+                    const auto p = s.mesh.triangle(tree_.blocks[k].id[lane]);
+                    for (int c = 0; c < 3; ++c)
+                        for (int a = 0; a < 3; ++a) corners_[k].v[c][a][lane] = p[c][a];
+                }
+        }
     }
     std::optional<double> sah_cost() const override {
         if (!set_) return std::nullopt;
         return tree_.stats.sah;
     }
     // The wide tree and its blocks; the triangle set is kept for loose primitives and unplaceable rays.
-    std::size_t memory_bytes() const override { return tree_.memory_bytes() + (set_ ? set_->memory_bytes() : 0); }
+    std::size_t memory_bytes() const override {
+        return tree_.memory_bytes() + (set_ ? set_->memory_bytes() : 0) + corners_.size() * sizeof(vertex_block<M>);
+    }
 
     // tree_query.hpp's rules (loose primitives, rays no tree can place) around the wide walk.
     template <class Stats>
     hit closest(const ray& query, Stats& stats) const {
         if (!set_) return hit{};
-        return tree_closest_with(*set_, tree_.loose, query, stats, [&](ray& r, hit& best) {
-            const ray_lanes<M> lanes(r);
+        const auto descend = [&](ray& r, hit& best) {
+            const lanes_t lanes(r);
             wide_traverse<visit_order::nearest>(tree_, r, stats, [&](std::uint32_t ref) {
                 const triangle_block<M>* b = &tree_.blocks[leaf_first(ref)];
                 for (std::uint32_t k = leaf_blocks(ref); k-- > 0; ++b) {
                     stats.prim_test(M);
                     simd::vfloat<M> t, u, v;
-                    unsigned bits = simd::movemask(intersect_block(*b, lanes, r.tmin, r.tmax, t, u, v));
+                    unsigned bits = simd::movemask(test_block(*b, lanes, r.tmin, r.tmax, t, u, v));
                     if (bits == 0) continue;
                     alignas(64) float ts[M], us[M], vs[M];
                     t.store(ts), u.store(us), v.store(vs);
@@ -62,31 +112,45 @@ public:
                 }
                 return false;
             });
-        });
+        };
+        if constexpr (Watertight) return tree_closest_with(*lane_set_, tree_.loose, query, stats, descend);
+        else return tree_closest_with(*set_, tree_.loose, query, stats, descend);
     }
 
     template <class Stats>
     bool any(const ray& query, Stats& stats) const {
         if (!set_) return false;
-        return tree_any_with(*set_, tree_.loose, query, stats, [&](ray& r) {
-            const ray_lanes<M> lanes(r);
+        const auto descend = [&](ray& r) {
+            const lanes_t lanes(r);
             bool found = false;
             const auto leaf = [&](std::uint32_t ref) {
                 const triangle_block<M>* b = &tree_.blocks[leaf_first(ref)];
                 for (std::uint32_t k = leaf_blocks(ref); k-- > 0 && !found; ++b) {
                     stats.prim_test(M);
                     simd::vfloat<M> t, u, v;
-                    found = simd::any(intersect_block(*b, lanes, r.tmin, r.tmax, t, u, v));
+                    found = simd::any(test_block(*b, lanes, r.tmin, r.tmax, t, u, v));
                 }
                 return found;
             };
             if (any_nearest_) wide_traverse<visit_order::nearest>(tree_, r, stats, leaf);
             else wide_traverse<visit_order::stored>(tree_, r, stats, leaf);
             return found;
-        });
+        };
+        if constexpr (Watertight) return tree_any_with(*lane_set_, tree_.loose, query, stats, descend);
+        else return tree_any_with(*set_, tree_.loose, query, stats, descend);
     }
 
 private:
+    using lanes_t = std::conditional_t<Watertight, shear_lanes<M>, ray_lanes<M>>;
+    // The block test: Moeller-Trumbore on block b, or the watertight test on its corners.
+    [[gnu::always_inline]] simd::vmask<M> test_block(const triangle_block<M>& b, const lanes_t& lanes, float tmin,
+                                                    float tmax, simd::vfloat<M>& t, simd::vfloat<M>& u,
+                                                    simd::vfloat<M>& v) const {
+        if constexpr (Watertight)
+            return intersect_block_watertight(corners_[std::size_t(&b - tree_.blocks.data())], lanes, tmin, tmax, t, u, v);
+        else return intersect_block(b, lanes, tmin, tmax, t, u, v);
+    }
+
     std::string name_;
     ch04::bvh_builder builder_;
     collapse_config config_;
@@ -94,12 +158,24 @@ private:
     std::unique_ptr<ch01::triangle_set> set_;
     ch04::bvh binary_;
     wide_bvh<N, M> tree_;
+    // Watertight only: the corners of every block, and the single-triangle test beside the tree.
+    std::vector<vertex_block<M>> corners_;
+    triangle_mesh mesh_;
+    std::unique_ptr<watertight_lane_set<M>> lane_set_;
 };
 
 }  // namespace
 
 std::unique_ptr<wide_accel_base> make_accel(std::string name, ch04::bvh_builder builder, const wide_config& c) {
     const int key = c.width * 100 + c.block;
+    if (c.watertight) {
+        switch (key) {
+        case 804: return std::make_unique<wide_accel<8, 4, true>>(std::move(name), std::move(builder), c);
+        case 1604: return std::make_unique<wide_accel<16, 4, true>>(std::move(name), std::move(builder), c);
+        default:
+            throw std::invalid_argument("wide BVH: the watertight test is built for nodes of 8 or 16 with blocks of 4");
+        }
+    }
     switch (key) {
     case 404: return std::make_unique<wide_accel<4, 4>>(std::move(name), std::move(builder), c);
     case 804: return std::make_unique<wide_accel<8, 4>>(std::move(name), std::move(builder), c);
