@@ -186,7 +186,7 @@ fi
 
 # Chapter 15: no ray escapes the watertight test (float or double) in brute force or in a tree walked with a
 # conservative or the fast box test; the table has a row per test and box; spawn.csv a row per offset and
-# placement (8 placements x 4 offsets); --scenes refuses a scene that is not there.
+# placement (13 placements x 4 offsets); --scenes refuses a scene that is not there; --from-race's ratios.
 if [[ $nn == 15 ]]; then
     bad=$(awk -F, 'NR > 1 && ($6 == "watertight" || $6 == "watertight-double") && $7 != "plain" && $10 != 0' \
         "$out/escapes.csv")
@@ -199,6 +199,22 @@ if [[ $nn == 15 ]]; then
     runs "--scenes of a missing file" 2 "$program" --quick --scenes "$dir/no_such.ply" --out "$dir/never"
     contains "$dir/err" "--scenes: no file" "--scenes of a missing file"
     [[ ! -e $dir/never ]] || fail "--scenes of a missing file: --out $dir/never was created"
+    # --from-race: two processes of a race with ch15-mt-fast and ch15-watertight-fast: per-process ratios
+    # 0.5 and 1.0 (primary, closest hit), 2.0 (shadow, any hit), median and range.
+    header="scene,triangles,structure,chapter,exact,rays,ray_count,build_ms,memory_bytes,sah_cost,closest_mrays_s"
+    header+=",closest_runs,closest_vs_embree,closest_box_per_ray,closest_prim_per_ray,closest_nodes_per_ray"
+    header+=",closest_differing,any_mrays_s,any_runs,any_vs_embree,any_box_per_ray,any_prim_per_ray,any_differing"
+    row() { echo "s.ply,1,$1,15,1,$2,8,1,1,1,$3,1,1,1,1,1,0,$4,1,1,1,1,0"; }
+    mkdir -p "$dir/race/processes/1" "$dir/race/processes/2"
+    { echo "$header"; row ch15-mt-fast primary 4 1; row ch15-watertight-fast primary 2 1
+      row ch15-mt-fast shadow 9 3; row ch15-watertight-fast shadow 9 6; } >"$dir/race/processes/1/race.csv"
+    { echo "$header"; row ch15-mt-fast primary 4 1; row ch15-watertight-fast primary 4 1; } \
+        >"$dir/race/processes/2/race.csv"
+    runs "--from-race" 0 "$program" --from-race "$dir/race" --out "$dir/ratios"
+    contains "$dir/ratios/race_ratios.csv" "s.ply,primary,ch15-watertight-fast,ch15-mt-fast,2,0.75,0.5,1" "--from-race"
+    contains "$dir/ratios/race_ratios.csv" "s.ply,shadow,ch15-watertight-fast,ch15-mt-fast,1,2,2,2" "--from-race"
+    runs "--from-race of a folder without processes" 1 "$program" --from-race "$dir/ratios" --out "$dir/ratios2"
+    contains "$dir/err" "no race.csv" "--from-race of a folder without processes"
 fi
 
 # Nothing is overwritten unless asked: the same run again is refused and leaves the files as they were.

@@ -10,6 +10,7 @@
 #include "strahl/ch15/accel.hpp"
 #include "strahl/ch15/embree_robust.hpp"
 #include "strahl/ch15/experiments.hpp"
+#include "strahl/ch15/race_ratios.hpp"
 #include "strahl/parallel.hpp"
 #include "strahl/plot.hpp"
 #include "strahl/procedural.hpp"
@@ -337,9 +338,19 @@ int run(int argc, const char* const* argv) {
                                      "always timed on one thread")
         .option("out", "DIR", "", "write escapes.csv, spawn.csv, table.csv and escape_vs_speed.svg into DIR/ "
                                    "(default out/15_robustness/)")
+        .option("from-race", "DIR", "", "only write race_ratios.csv: the same-process speed ratios of a race run "
+                "with --processes N and chapter 15's rows (DIR/processes/*/race.csv), median and range")
         .flag("force", "replace existing files in a folder named with --out")
         .flag("quick", "the two smallest spheres, 4000 spawn points, the teapot at 64 x 48 rays, one repeat");
     if (!args.parse(argc, argv)) return 0;
+    if (args.has("from-race")) {
+        const fs::path folder = args.has("out") ? fs::path(args.get("out")) : fs::path("out/15_robustness");
+        prepare_output(folder / "race_ratios.csv", args.has("out"), args.has("force"));
+        const std::string csv = race_ratios(args.get("from-race"));
+        write_text(folder / "race_ratios.csv", csv);
+        std::printf("wrote %s\n", (folder / "race_ratios.csv").string().c_str());
+        return 0;
+    }
     const bool quick = args.has("quick");
     const image_size size = read_image_size(args, quick ? 64 : 192, 4096);
     const int repeats = quick ? 1 : args.get_int("repeats");

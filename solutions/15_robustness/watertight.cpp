@@ -38,10 +38,11 @@ bool intersect_watertight(const ray& r, const shear& s, const vec3& v0, const ve
         ev = float(double(ax) * double(cy) - double(ay) * double(cx));
         ew = float(double(bx) * double(ay) - double(by) * double(ax));
     }
-    // c. Mixed signs: outside. det = 0 (or NaN): in the plane, or degenerate.
+    // c. Mixed signs: outside. det = 0 (or NaN): in the plane, or degenerate; so are parallel edges.
     if ((eu < 0.0f || ev < 0.0f || ew < 0.0f) && (eu > 0.0f || ev > 0.0f || ew > 0.0f)) return false;
     const float det = eu + ev + ew;
     if (!(std::fabs(det) > 0.0f)) return false;
+    if (glm::cross(v1 - v0, v2 - v0) == vec3(0.0f)) return false;  // parallel edges: degenerate
     // d. The sheared depths and the scaled distance T.
     const float az = s.sz * a[s.kz], bz = s.sz * b[s.kz], cz = s.sz * c[s.kz];
     const float big_t = eu * az + ev * bz + ew * cz;

@@ -121,3 +121,28 @@ TEST_CASE("ch15 structures: no ray escapes the watertight tree, at every scale a
     CHECK(mt_escapes > 0);     // Moeller-Trumbore's cracks show in the same cases,
     CHECK(plain_escapes > 0);  // and the plain box test's: rays through a box's edge or corner miss it
 }
+
+TEST_CASE("ch15 tests: pbrt-v4's degenerate triangle is missed by every test", "[ch15]") {
+    // pbrt-v4's shapes_test.cpp, Triangle.BadCases: three collinear corners (equal x and z) and a ray that
+    // once reported a hit on it (tmax 0.9999).
+    const vec3 v0(-1113.45459f, -79.049614f, -56.2431908f), v1(-1113.45459f, -87.0922699f, -56.2431908f),
+        v2(-1113.45459f, -79.2090149f, -56.2431908f);
+    const ray r{vec3(-1081.47925f, 99.9999542f, 87.7701111f), vec3(-32.1072998f, -183.355865f, -144.607635f), 0.0f,
+                0.9999f};
+    float t, u, v;
+    CHECK_FALSE(ch01::intersect_triangle(r, v0, v1, v2, t, u, v));
+    CHECK_FALSE(intersect_mt_epsilon(r, v0, v1, v2, t, u, v));
+    CHECK_FALSE(intersect_watertight(r, make_shear(r.dir), v0, v1, v2, t, u, v));
+    CHECK_FALSE(intersect_watertight_double(r, v0, v1, v2, t, u, v));
+    // And in the tree, with Inf and NaN rays beside it: no hit, no crash.
+    triangle_mesh m;
+    m.positions = {v0, v1, v2};
+    m.indices = {uvec3(0, 1, 2)};
+    robust_bvh<test_kind::watertight, box_kind::fast> tree;
+    tree.build(test::mesh_only(m));
+    const std::vector<ray> rays = {r, ray{r.org, vec3(inf, 0, 0), 0.0f, inf}, ray{vec3(std::nanf(""), 0, 0), r.dir, 0.0f, inf},
+                                   ray{r.org, vec3(0), 0.0f, inf}};
+    std::vector<hit> hits(rays.size());
+    tree.intersect(rays, hits);
+    for (const hit& h : hits) CHECK_FALSE(h.found());
+}

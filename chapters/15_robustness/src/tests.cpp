@@ -74,6 +74,7 @@ bool intersect_watertight_double(const ray& r, const vec3& v0, const vec3& v1, c
     if ((eu < 0.0 || ev < 0.0 || ew < 0.0) && (eu > 0.0 || ev > 0.0 || ew > 0.0)) return false;
     const double det = eu + ev + ew;
     if (!(std::fabs(det) > 0.0)) return false;
+    if (glm::cross(glm::dvec3(v1) - glm::dvec3(v0), glm::dvec3(v2) - glm::dvec3(v0)) == glm::dvec3(0.0)) return false;
     const double tt = (eu * (sz * a[kz]) + ev * (sz * b[kz]) + ew * (sz * c[kz])) / det;
     if (!(tt > double(r.tmin) && tt < double(r.tmax))) return false;
     const float tf = float(tt);

@@ -122,6 +122,18 @@ template <int M>
     const vf big_t = eu * az + ev * bz + ew * cz;
     const vf tt = big_t / det;
     hit = hit & (vf(tmin) < tt) & (tt < vf(tmax));
+    // Parallel edges in float (glm::cross of v1 - v0 and v2 - v0 is exactly 0): degenerate, no hit. Only
+    // where a lane hits.
+    if (simd::movemask(hit) != 0) {
+        vf e1[3], e2[3];
+        for (int a = 0; a < 3; ++a) {
+            const vf v0 = vf::load(b.v[0][a]);
+            e1[a] = vf::load(b.v[1][a]) - v0, e2[a] = vf::load(b.v[2][a]) - v0;
+        }
+        const vf nx = e1[1] * e2[2] - e2[1] * e1[2], ny = e1[2] * e2[0] - e2[2] * e1[0],
+                 nz = e1[0] * e2[1] - e2[0] * e1[1];
+        hit = hit & ~((nx == zero) & (ny == zero) & (nz == zero));
+    }
     t = tt, u = ev / det, v = ew / det;
     return hit;
 }

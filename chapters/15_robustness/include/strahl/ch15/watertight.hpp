@@ -33,7 +33,10 @@ shear make_shear(const vec3& dir);
 //      operations: a product, a product, their difference); if any is exactly 0, all three again in double
 //      from the same floats (each product exact in double), rounded back to float;
 //   c. outside if the three have mixed signs (some < 0 and some > 0); det = U + V + W, no hit if det is 0
-//      (or NaN): a ray in the triangle's plane, or a degenerate triangle;
+//      (or NaN): a ray in the triangle's plane, or a degenerate triangle; and no hit on a triangle whose
+//      edges are parallel in float, (v1 - v0) x (v2 - v0) == (0, 0, 0) (glm::cross, compared per axis; the
+//      shear's rounding can give such a triangle a tiny area and a hit: pbrt-v4's test makes the same check);
+//      only tested where the signs agree, so it costs nothing on the many misses;
 //   d. the sheared depths Az = sz A[kz], Bz, Cz, and T = U Az + V Bz + W Cz (left to right);
 //   e. t = T / det, accepted only in (tmin, tmax); then u = V / det, v = W / det (the weights of v1 and v2,
 //      as exercise 01.3 names them).
