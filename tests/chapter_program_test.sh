@@ -48,7 +48,7 @@ case $nn in
     sized=(render.png:"32 32") ;;
 13) args=(--quick --width 32 --repeats 1 --out "$out") files=(wide.csv speedup.svg)
     sized=() ;;
-15) args=(--quick --out "$out") files=(escapes.csv spawn.csv table.csv escape_vs_speed.svg)
+15) args=(--quick --out "$out") files=(escapes.csv spawn.csv far.csv table.csv escape_vs_speed.svg)
     sized=() ;;
 *) echo "$0: no end-to-end run known for chapter $nn" >&2; exit 2 ;;
 esac
@@ -196,6 +196,10 @@ if [[ $nn == 15 ]]; then
     [[ $(tail -n +2 "$out/table.csv" | wc -l) -eq 15 ]] || fail "table.csv has not 15 rows (5 tests x 3 box tests)"
     [[ $(tail -n +2 "$out/spawn.csv" | wc -l) -eq 52 ]] || fail "spawn.csv has not 52 rows (13 placements x 4 offsets)"
     contains "$dir/out" "escapes per million" "the quick run's output"
+    # From far away the watertight test in the fast walk equals its brute force at every distance.
+    bad=$(awk -F, 'NR > 1 && $2 == "watertight" && $5 != 0' "$out/far.csv")
+    [[ -z $bad ]] || fail "far.csv: the watertight tree differs from its brute force: $bad"
+    [[ $(tail -n +2 "$out/far.csv" | wc -l) -eq 10 ]] || fail "far.csv has not 10 rows (5 distances x 2 tests)"
     runs "--scenes of a missing file" 2 "$program" --quick --scenes "$dir/no_such.ply" --out "$dir/never"
     contains "$dir/err" "--scenes: no file" "--scenes of a missing file"
     [[ ! -e $dir/never ]] || fail "--scenes of a missing file: --out $dir/never was created"
