@@ -12,7 +12,8 @@ namespace strahl::ch04 {
 //     if either is NaN (0 * inf: the origin lies on that plane and d[a] is +0 or -0, so the ray runs in the
 //     plane, inside the closed slab for every t), skip this axis;
 //     swap them if near > far;
-//     widen the exit away from zero: far *= 1 + 2 * gamma(3) if far > 0, else 1 - 2 * gamma(3) (+-inf stay);
+//     widen the exit toward +inf (later): far *= 1 + 2 * gamma(3) if far > 0, else 1 - 2 * gamma(3) (a
+//     negative exit moves toward zero; +-inf stay);
 //     t0 = max(t0, near); t1 = min(t1, far);
 //     miss as soon as t0 > t1.
 bool slab_test(const aabb& box, const vec3& org, const vec3& inv_dir, float tmin, float tmax) {

@@ -15,7 +15,8 @@ bool intersect_sphere(const ray& r, const vec3& center, float radius, float& t) 
     const vec3 l = f - (b / a) * r.dir;
     const float disc = a * (radius * radius - glm::dot(l, l));
     if (!(disc >= 0.0f)) return false;  // a miss, or a NaN somewhere
-    // Step 3, the stable pair of roots: q = -(b + sign(b) sqrt(disc)), t0 = c / q, t1 = q / a.
+    // Step 3, the stable pair of roots: q = -(b + sign(b) sqrt(disc)), t0 = c / q, t1 = q / a; sign(b) is
+    // +-1, never 0 (glm::sign(0) would make q = 0 for b = 0): copysign.
     const float q = -(b + std::copysign(std::sqrt(disc), b));
     float t0 = q != 0.0f ? c / q : 0.0f;
     float t1 = q / a;
