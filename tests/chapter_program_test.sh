@@ -235,9 +235,13 @@ runs "unwritable --out" 1 "$program" "${args[@]:0:${#args[@]}-1}" "$blocked"
 contains "$dir/err" "cannot create folder" "unwritable --out"
 
 # The exercise track's program: either the student's finished work runs (exit 0), or it names the first
-# exercise not yet done, with its file (exit 3).
+# exercise not yet done, with its file (exit 3). (None in a build without the exercise track.)
 rc=0
-"$exercise" "${args[@]:0:${#args[@]}-1}" "$dir/exercise_out/" >"$dir/out" 2>"$dir/err" || rc=$?
+if [[ $exercise == none ]]; then
+    echo "note: no exercise track in this build (the sanitizer preset): its program is not checked here"
+else
+    "$exercise" "${args[@]:0:${#args[@]}-1}" "$dir/exercise_out/" >"$dir/out" 2>"$dir/err" || rc=$?
+fi
 if [[ $rc -eq 3 ]]; then
     grep -Eq "exercise $nn\.[0-9]+ .* is not done yet: exercises/" "$dir/err" ||
         { fail "exercise program: exit 3 without naming the exercise"; sed 's/^/    /' "$dir/err" >&2; }
