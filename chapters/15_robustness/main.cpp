@@ -383,7 +383,7 @@ int run(int argc, const char* const* argv) {
         .option("height", "N", "", "rows (default 3/4 of the width)")
         .option("repeats", "K", "5", "timed runs per speed after a warm-up; the median is reported")
         .option("spawn-points", "N", "", "hit points per placement in the spawn test, 1000 to 10000000 (default "
-                                         "200000, 4000 with --quick; a quarter of it per structure for the self-hits)")
+                                         "200000, 1000 with --quick; a quarter of it per structure for the self-hits)")
         .option("threads", "N", "0", "threads counting escapes and self-hits, 0..1024 (0: one per core); speeds are "
                                      "always timed on one thread")
         .option("out", "DIR", "", "write escapes.csv, spawn.csv, table.csv and escape_vs_speed.svg into DIR/ "
@@ -391,7 +391,7 @@ int run(int argc, const char* const* argv) {
         .option("from-race", "DIR", "", "only write race_ratios.csv: the same-process speed ratios of a race run "
                 "with --processes N and chapter 15's rows (DIR/processes/*/race.csv), median and range")
         .flag("force", "replace existing files in a folder named with --out")
-        .flag("quick", "the two smallest spheres, 4000 spawn points, the teapot at 64 x 48 rays, one repeat");
+        .flag("quick", "the two smallest spheres, 1000 spawn points, the teapot at 64 x 48 rays, one repeat");
     if (!args.parse(argc, argv)) return 0;
     if (args.has("from-race")) {
         const fs::path folder = args.has("out") ? fs::path(args.get("out")) : fs::path("out/15_robustness");
@@ -405,7 +405,7 @@ int run(int argc, const char* const* argv) {
     const image_size size = read_image_size(args, quick ? 64 : 192, 4096);
     const int repeats = quick ? 1 : args.get_int("repeats");
     if (repeats < 1 || repeats > 100) throw usage_error("--repeats must lie in [1, 100]");
-    const int points = args.has("spawn-points") ? args.get_int("spawn-points") : quick ? 4000 : 200000;
+    const int points = args.has("spawn-points") ? args.get_int("spawn-points") : quick ? 1000 : 200000;
     if (points < 1000 || points > 10000000) throw usage_error("--spawn-points must lie in [1000, 10000000]");
     const int threads = read_threads(args, 0);
     const std::vector<std::string> specs = scene_specs(args, quick);
