@@ -196,10 +196,16 @@ if [[ $nn == 15 ]]; then
     [[ $(tail -n +2 "$out/table.csv" | wc -l) -eq 15 ]] || fail "table.csv has not 15 rows (5 tests x 3 box tests)"
     [[ $(tail -n +2 "$out/spawn.csv" | wc -l) -eq 52 ]] || fail "spawn.csv has not 52 rows (13 placements x 4 offsets)"
     contains "$dir/out" "escapes per million" "the quick run's output"
-    # From far away the watertight test in the fast walk equals its brute force at every distance.
-    bad=$(awk -F, 'NR > 1 && $2 == "watertight" && $5 != 0' "$out/far.csv")
-    [[ -z $bad ]] || fail "far.csv: the watertight tree differs from its brute force: $bad"
-    [[ $(tail -n +2 "$out/far.csv" | wc -l) -eq 10 ]] || fail "far.csv has not 10 rows (5 distances x 2 tests)"
+    # From far away, with origins moved to the scene (ray_frame), every tree equals its brute force and
+    # Moeller-Trumbore finds the watertight test's hits; with origins kept, Moeller-Trumbore's does not.
+    [[ $(tail -n +2 "$out/far.csv" | wc -l) -eq 20 ]] || fail "far.csv has not 20 rows (5 distances x 2 tests x 2)"
+    bad=$(awk -F, 'NR > 1 && ($3 == "moved" || $2 == "watertight") && $6 != 0' "$out/far.csv")
+    [[ -z $bad ]] || fail "far.csv: a tree differs from its brute force with moved origins or the watertight test: $bad"
+    bad=$(awk -F, 'NR > 1 && $3 == "moved" { h[$1 "," $2] = $5 } END { for (k in h) { split(k, p, ",");
+        if (p[2] == "mt" && h[k] != h[p[1] ",watertight"]) print k } }' "$out/far.csv")
+    [[ -z $bad ]] || fail "far.csv: moved, Moeller-Trumbore's hits differ from the watertight test's at: $bad"
+    [[ $(awk -F, 'NR > 1 && $2 == "mt" && $3 == "kept" && $6 > 0' "$out/far.csv" | wc -l) -gt 0 ]] ||
+        fail "far.csv: with origins kept, Moeller-Trumbore's tree never differs (the effect the frame removes)"
     runs "--scenes of a missing file" 2 "$program" --quick --scenes "$dir/no_such.ply" --out "$dir/never"
     contains "$dir/err" "--scenes: no file" "--scenes of a missing file"
     [[ ! -e $dir/never ]] || fail "--scenes of a missing file: --out $dir/never was created"

@@ -36,6 +36,7 @@ inline bool bit_equal(const hit& a, const hit& b) {
 inline std::size_t disagreements_with_brute_force(const accel& a, const triangle_mesh& mesh,
                                                   const std::vector<ray>& rays) {
     const ch01::triangle_set tris(mesh);
+    const ray_frame frame(mesh.bounds());  // brute force moves far origins to the scene as the structures do
     std::vector<hit> got(rays.size()), got_counted(rays.size());
     std::vector<std::uint8_t> blocked(rays.size()), blocked_counted(rays.size());
     a.intersect(rays, got);
@@ -46,13 +47,16 @@ inline std::size_t disagreements_with_brute_force(const accel& a, const triangle
     CHECK(counts->rays == rays.size());
     std::size_t wrong = 0;
     for (std::size_t i = 0; i < rays.size(); ++i) {
-        ray r = rays[i];
-        hit ref;
-        bool any = false;
-        for (std::uint32_t k = 0; k < tris.size(); ++k) {
-            tris.intersect(k, r, ref);
-            any = any || tris.occludes(k, rays[i]);
-        }
+        const hit ref = frame.closest(rays[i], [&](ray r) {
+            hit best;
+            for (std::uint32_t k = 0; k < tris.size(); ++k) tris.intersect(k, r, best);
+            return best;
+        });
+        const bool any = frame.any(rays[i], [&](const ray& r) {
+            for (std::uint32_t k = 0; k < tris.size(); ++k)
+                if (tris.occludes(k, r)) return true;
+            return false;
+        });
         const bool ok = bit_equal(got[i], ref) && bit_equal(got_counted[i], ref) && (blocked[i] != 0) == any &&
                         blocked_counted[i] == blocked[i];
         if (!ok && ++wrong <= 3)

@@ -14,15 +14,20 @@ namespace {
 
 constexpr float nan_f = std::numeric_limits<float>::quiet_NaN();
 
-hit brute_closest(const ch01::triangle_set& set, ray r) {
-    hit best;
-    for (std::uint32_t i = 0; i < set.size(); ++i) set.intersect(i, r, best);
-    return best;
+// Brute force, far origins moved to the scene by the frame as the grid's queries are (ray_frame.hpp).
+hit brute_closest(const ch01::triangle_set& set, const ray_frame& f, const ray& query) {
+    return f.closest(query, [&](ray r) {
+        hit best;
+        for (std::uint32_t i = 0; i < set.size(); ++i) set.intersect(i, r, best);
+        return best;
+    });
 }
-bool brute_any(const ch01::triangle_set& set, const ray& r) {
-    for (std::uint32_t i = 0; i < set.size(); ++i)
-        if (set.occludes(i, r)) return true;
-    return false;
+bool brute_any(const ch01::triangle_set& set, const ray_frame& f, const ray& query) {
+    return f.any(query, [&](const ray& r) {
+        for (std::uint32_t i = 0; i < set.size(); ++i)
+            if (set.occludes(i, r)) return true;
+        return false;
+    });
 }
 bool identical(const hit& a, const hit& b) {
     return std::bit_cast<std::uint32_t>(a.t) == std::bit_cast<std::uint32_t>(b.t) && a.prim == b.prim &&
@@ -86,10 +91,11 @@ void check_against_brute_force(const scene& s, const grid_options& opt, std::siz
         REQUIRE(c.has_value());
         CHECK(c->rays == rays.size());
         std::size_t wrong = 0, found = 0;
+        const ray_frame frame(s.mesh.bounds());
         for (std::size_t i = 0; i < rays.size(); ++i) {
-            const hit want = brute_closest(set, rays[i]);
+            const hit want = brute_closest(set, frame, rays[i]);
             found += want.found();
-            if (!identical(hits[i], want) || !identical(counted[i], want) || (blocked[i] != 0) != brute_any(set, rays[i])) {
+            if (!identical(hits[i], want) || !identical(counted[i], want) || (blocked[i] != 0) != brute_any(set, frame, rays[i])) {
                 if (++wrong < 5) UNSCOPED_INFO("ray " << i << ": got t " << hits[i].t << " prim " << hits[i].prim
                                                       << ", brute force t " << want.t << " prim " << want.prim);
             }

@@ -19,6 +19,7 @@ public:
 
     void build(const scene& s) override {
         set_ = std::make_unique<Set>(s.mesh);
+        this->set_frame(ray_frame(s.mesh.bounds()));
         std::vector<aabb> boxes(set_->size());
         for (std::size_t i = 0; i < boxes.size(); ++i) boxes[i] = set_->bounds(i);
         tree_ = build_kd_tree(boxes, params_);

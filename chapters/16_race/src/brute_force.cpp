@@ -2,7 +2,10 @@
 
 namespace strahl::race {
 
-void brute_force::build(const scene& s) { triangles_ = std::make_unique<ch01::triangle_set>(s.mesh); }
+void brute_force::build(const scene& s) {
+    triangles_ = std::make_unique<ch01::triangle_set>(s.mesh);
+    set_frame(ray_frame(s.mesh.bounds()));  // far origins moved to the scene, as every structure does
+}
 
 template <class Stats>
 hit brute_force::closest(const ray& query, Stats& stats) const {

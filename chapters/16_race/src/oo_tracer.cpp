@@ -14,6 +14,7 @@ public:
         triangles_only.spheres.clear();
         triangles_only.planes.clear();
         world_ = ch01::build_world(triangles_only);
+        frame_ = ray_frame(s.mesh.bounds());  // far origins moved to the scene, as brute force does
         triangle_count_ = s.mesh.triangle_count();
     }
 
@@ -25,16 +26,18 @@ public:
     // The world counts always (chapter 01 counts every test it makes); the race times it the same way.
     std::optional<counter_values> intersect_counted(std::span<const ray> rays, std::span<hit> hits) const override {
         counting c;
-        for (std::size_t i = 0; i < rays.size(); ++i) {
-            ch01::surface s;
-            hits[i] = world_.closest_hit(rays[i], s, c) ? s.h : hit{};
-        }
+        for (std::size_t i = 0; i < rays.size(); ++i)
+            hits[i] = frame_.closest(rays[i], [&](const ray& r) {
+                ch01::surface s;
+                return world_.closest_hit(r, s, c) ? s.h : hit{};
+            });
         return c.values();
     }
     std::optional<counter_values> occluded_counted(std::span<const ray> rays,
                                                    std::span<std::uint8_t> blocked) const override {
         counting c;
-        for (std::size_t i = 0; i < rays.size(); ++i) blocked[i] = world_.occluded(rays[i], c) ? 1 : 0;
+        for (std::size_t i = 0; i < rays.size(); ++i)
+            blocked[i] = frame_.any(rays[i], [&](const ray& r) { return world_.occluded(r, c); }) ? 1 : 0;
         return c.values();
     }
 
@@ -46,6 +49,7 @@ public:
 
 private:
     ch01::world world_;
+    ray_frame frame_;
     std::size_t triangle_count_ = 0;
 };
 

@@ -21,6 +21,7 @@ public:
 
     void build(const scene& s) override {
         set_.emplace(s.mesh);
+        this->set_frame(ray_frame(s.mesh.bounds()));
         const triangle_mesh& mesh = s.mesh;
         // Exact overlap (an option the chapter measures): the triangle itself against the cell's box.
         grid_.build(*set_, opt_, [&mesh](std::uint32_t i, const aabb& cell) {

@@ -103,6 +103,8 @@ public:
 
 protected:
     std::vector<shape> shapes_of(const scene& s) {
+        // The frame of everything the structure holds: the spheres and planes too where it takes them.
+        this->set_frame(with_shapes_ ? ray_frame::of_scene(s) : ray_frame(s.mesh.bounds()));
         materials_ = make_material_ids(s, with_shapes_);
         return make_shapes(s, with_shapes_);
     }

@@ -64,6 +64,7 @@ public:
 
     void build(const scene& s) override {
         set_ = std::make_unique<ch01::triangle_set>(s.mesh);
+        this->set_frame(ray_frame(s.mesh.bounds()));
         std::vector<aabb> boxes(set_->size());
         std::vector<vec3> centroids(set_->size());
         for (std::size_t i = 0; i < boxes.size(); ++i) boxes[i] = set_->bounds(i), centroids[i] = boxes[i].centroid();

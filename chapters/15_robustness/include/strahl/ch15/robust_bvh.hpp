@@ -119,7 +119,10 @@ template <test_kind K>
 class brute_tests final : public per_ray_accel<brute_tests<K>> {
 public:
     std::string name() const override { return std::string("brute-") + ch15::name(K); }
-    void build(const scene& s) override { set_ = triangle_tests<K>(s.mesh); }
+    void build(const scene& s) override {
+        set_ = triangle_tests<K>(s.mesh);
+        this->set_frame(ray_frame(s.mesh.bounds()));
+    }
     template <class Stats>
     hit closest(const ray& query, Stats& stats) const {
         stats.ray();
@@ -152,6 +155,7 @@ public:
     std::string name() const override { return std::string("ch15-") + ch15::name(K) + "-" + ch15::name(B); }
     void build(const scene& s) override {
         set_ = triangle_tests<K>(s.mesh);
+        this->set_frame(ray_frame(s.mesh.bounds()));
         std::vector<aabb> boxes(set_.size());
         std::vector<vec3> centroids(set_.size());
         for (std::size_t i = 0; i < boxes.size(); ++i) boxes[i] = set_.bounds(i), centroids[i] = boxes[i].centroid();
