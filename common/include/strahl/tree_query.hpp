@@ -34,6 +34,18 @@ inline float ray_slack(const ray& r, const aabb& box) {
     return (reach * 0x1p-16f + 1e-5f * diag) / len;
 }
 
+// The ray's slack in space: how far beside a box (or a split plane) a ray may pass and still get a hit from
+// the triangle test's rounding. Moeller-Trumbore's u and v carry an absolute error of a few 2^-24
+// |org - v0|, so a ray passing that close beside a triangle can be accepted; brute force reports the hit,
+// and a tree must not cull the box. 2^-20 of the largest coordinate of the tree's box plus the origin's,
+// on every axis: at least 16 times that error. Trees grow their boxes (and split planes) by it wherever a
+// direction component is zero or tiny; chapter 05's fast slab test grows them by its own, like, bound.
+inline float space_slack(const ray& r, const aabb& box) {
+    const vec3 p = glm::max(glm::abs(box.min), glm::abs(box.max)), o = glm::abs(r.org);
+    return 0x1p-20f * (std::max(std::max(p.x, p.y), p.z) + std::max(std::max(o.x, o.y), o.z));
+}
+inline aabb grown(const aabb& box, float by) { return {box.min - vec3(by), box.max + vec3(by)}; }
+
 // The rules above around a structure's own descent: descend(r, best) for closest hit, descend(r) -> found
 // for any hit, called only for a placeable ray with a non-empty interval, after the loose primitives.
 // tree_closest and tree_any below descend through leaves of primitive ids; a structure whose leaves hold

@@ -30,6 +30,20 @@ bool clip_to_box(const ray& r, const vec3& inv_dir, const aabb& box, float slack
 
 // (The slack of a ray, ray_slack, is strahl/tree_query.hpp's, shared with every tree.)
 
+// near_far with the split plane widened in space by `grow` (space_slack): a ray within grow of the plane
+// may hit triangles on both sides through the triangle test's rounding. A ray parallel to the plane that
+// close visits both children; any other gets at least grow / |d| of t-slack on this axis.
+inline child_visit split_visit(const ray& r, const vec3& inv_dir, int axis, float split, float t0, float t1,
+                               float slack, float grow) {
+    if (r.dir[axis] == 0.0f && std::abs(r.org[axis] - split) <= grow) {
+        child_visit v;
+        if (!(t0 <= t1)) return v;
+        for (std::uint8_t c = 0; c < 2; ++c) v.child[v.count] = c, v.t0[v.count] = t0, v.t1[v.count] = t1, ++v.count;
+        return v;
+    }
+    return near_far(r, inv_dir, axis, split, t0, t1, std::max(slack, grow * std::abs(inv_dir[axis])));
+}
+
 // Visits the leaves the ray's segment enters, front to back. leaf(first, count, t0, t1) tests the leaf's
 // references and returns true to stop (any hit). A closest-hit leaf test shrinks r.tmax (record_closest);
 // a node whose range starts beyond r.tmax is skipped, so traversal stops only when no farther node can
@@ -38,10 +52,10 @@ template <class Stats, class LeafTest>
 void traverse(const kd_tree& tree, ray& r, Stats& stats, LeafTest&& leaf) {
     if (tree.nodes.empty()) return;
     const vec3 inv_dir = 1.0f / r.dir;
-    const float slack = ray_slack(r, tree.bounds);
+    const float slack = ray_slack(r, tree.bounds), grow = space_slack(r, tree.bounds);
     float t0, t1;
     stats.box_test();
-    if (!clip_to_box(r, inv_dir, tree.bounds, slack, t0, t1)) return;
+    if (!clip_to_box(r, inv_dir, grown(tree.bounds, grow), slack, t0, t1)) return;
     struct entry { std::uint32_t node; float t0, t1; };
     entry stack[kd_max_depth + 2];
     int top = 0;
@@ -55,7 +69,7 @@ void traverse(const kd_tree& tree, ray& r, Stats& stats, LeafTest&& leaf) {
                 if (leaf(n.first(), n.count, t0, t1)) return;
             } else {
                 // Step 2, the t-split rule: near child first, far child onto the stack.
-                const child_visit v = near_far(r, inv_dir, n.axis(), n.split, t0, std::min(t1, r.tmax), slack);
+                const child_visit v = split_visit(r, inv_dir, n.axis(), n.split, t0, std::min(t1, r.tmax), slack, grow);
                 if (v.count > 0) {
                     if (v.count == 2) stack[top++] = {n.left() + v.child[1], v.t0[1], v.t1[1]};
                     node = n.left() + v.child[0];

@@ -37,7 +37,8 @@ struct child_order {
 child_order ordered_children(std::uint32_t index, const bvh_node& node, const vec3& dir);
 
 // Boxes are tested against [tmin - slack, tmax + slack], with ray_slack (strahl/tree_query.hpp): a
-// triangle test's t carries its own rounding error, which the box's t need not share.
+// triangle test's t carries its own rounding error, which the box's t need not share. And each box is
+// grown by space_slack: its u and v carry one too, so a ray passing just beside a box can hit inside it.
 
 // Visits the leaves whose boxes the ray meets, near child first. leaf(first, count) tests prim_ids
 // [first, first + count) and returns true to stop (any hit). A closest-hit leaf test shrinks r.tmax to
@@ -47,7 +48,7 @@ template <class Stats, class LeafTest>
 void traverse(const bvh& tree, ray& r, Stats& stats, LeafTest&& leaf) {
     if (tree.nodes.empty()) return;
     const vec3 inv_dir = 1.0f / r.dir;
-    const float slack = ray_slack(r, tree.bounds);
+    const float slack = ray_slack(r, tree.bounds), grow = space_slack(r, tree.bounds);
     std::uint32_t stack[bvh_max_depth + 2];
     int top = 0;
     std::uint32_t index = 0;
@@ -55,8 +56,8 @@ void traverse(const bvh& tree, ray& r, Stats& stats, LeafTest&& leaf) {
         const bvh_node& n = tree.nodes[index];
         stats.node_visit();
         stats.box_test();
-        // Step 1, the box: skip the node unless the (widened) segment meets it.
-        if (slab_test(n.box(), r.org, inv_dir, r.tmin - slack, r.tmax + slack)) {
+        // Step 1, the box: skip the node unless the (widened) segment meets the (grown) box.
+        if (slab_test(grown(n.box(), grow), r.org, inv_dir, r.tmin - slack, r.tmax + slack)) {
             if (n.is_leaf()) {
                 // Step 2, the leaf: its primitives, through the set's test.
                 if (leaf(n.offset, std::uint32_t(n.count))) return;

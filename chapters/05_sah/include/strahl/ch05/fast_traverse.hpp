@@ -72,7 +72,8 @@ void walk_with(const ch04::bvh& tree, const Slab& s, float slack, ray& r, Stats&
 }
 
 // Visits the leaves whose boxes the ray meets, nearer child first; leaf(first, count) as in chapter 04. The
-// fast slab test where the ray allows it, else the robust one: both conservative, so the answers are the same.
+// fast slab test where the ray allows it, else the robust one on grown boxes: both conservative, so the
+// answers are the same.
 template <class Stats, class LeafTest>
 void fast_traverse(const ch04::bvh& tree, ray& r, Stats& stats, LeafTest&& leaf) {
     if (tree.nodes.empty()) return;
@@ -80,7 +81,7 @@ void fast_traverse(const ch04::bvh& tree, ray& r, Stats& stats, LeafTest&& leaf)
     if (const std::optional<fast_slab> s = fast_slab::make(r, tree.bounds))
         walk_with(tree, *s, slack, r, stats, leaf);
     else
-        walk_with(tree, robust_slab(r), slack, r, stats, leaf);
+        walk_with(tree, grown_slab(r, space_slack(r, tree.bounds)), slack, r, stats, leaf);
 }
 
 // fast_traverse as chapter 04's bvh_accel_t's Walk.

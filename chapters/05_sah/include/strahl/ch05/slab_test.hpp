@@ -52,6 +52,27 @@ struct robust_slab : plane_choice {
     }
 };
 
+// robust_slab on every box grown by `grow` (strahl/tree_query.hpp's space_slack) on each side: the fast
+// walk's test for rays fast_slab cannot take. A ray with a zero direction component that passes just
+// beside a box can still get a hit from a triangle inside it (the triangle test's rounding); fast_slab's
+// own widening covers that for every other ray.
+struct grown_slab : robust_slab {
+    float grow;
+    grown_slab(const ray& r, float by) : robust_slab(r), grow(by) {}
+    [[gnu::always_inline]] float entry(const ch04::bvh_node& n, float t0, float t1) const {
+        const float* planes = n.bmin;
+        for (int a = 0; a < 3; ++a) {
+            const float out = near_plane[a] < 3 ? -grow : grow;  // the near plane moves toward the origin
+            const float near = (planes[near_plane[a]] + out - org[a]) * inv_dir[a];
+            const float far = (planes[far_plane[a]] - out - org[a]) * inv_dir[a];
+            t0 = near > t0 ? near : t0;
+            t1 = far < t1 ? far : t1;
+        }
+        t1 *= t1 > 0.0f ? 1.0f + 2.0f * ch04::gamma(3) : 1.0f - 2.0f * ch04::gamma(3);
+        return t0 <= t1 ? t0 : inf;
+    }
+};
+
 // The widening of fast_slab, relative to P + |org| on each axis (P: the largest |coordinate| of the tree's
 // box on that axis). Why 2^-20 is enough, with u = 2^-24 the unit roundoff: for a plane p with exact
 // t = (p - o) / d, the computed t is (1 + e0)(1 + e3) / d * [(p - o) -+ eps + p e1 - (o +- eps) e2], every

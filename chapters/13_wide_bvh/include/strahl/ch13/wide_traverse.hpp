@@ -111,20 +111,25 @@ template <int N>
 std::uint32_t push_ordered_out_of_line(unsigned bits, const float* t, const std::uint32_t* child, stack_entry* stack,
                                        int& top);
 
-// Chapter 05's robust slab test on N boxes, for rays the fast one cannot take (a zero or tiny direction
-// component): t = (plane - org) * (1 / d), a NaN never wins a comparison, the exit widened by 1 + 2 gamma(3).
+// Chapter 05's grown_slab on N boxes, for rays the fast one cannot take (a zero or tiny direction
+// component): each box grown by `grow` (space_slack) on every side, t = (plane - org) * (1 / d), a NaN never
+// wins a comparison, the exit widened by 1 + 2 gamma(3). The growth is folded into the origin: the near
+// plane's origin term moves by grow toward the box, the far plane's away.
 template <int N>
 struct wide_robust_slab : plane_rows<N> {
     using vf = simd::vfloat<N>;
-    vf org[3], inv[3];
-    explicit wide_robust_slab(const ray& r) : plane_rows<N>(r.dir) {
-        for (int a = 0; a < 3; ++a) org[a] = vf(r.org[a]), inv[a] = vf(1.0f / r.dir[a]);
+    vf org_near[3], org_far[3], inv[3];
+    wide_robust_slab(const ray& r, float grow) : plane_rows<N>(r.dir) {
+        for (int a = 0; a < 3; ++a) {
+            const float toward = std::signbit(r.dir[a]) ? -grow : grow;  // near plane is bmin going up the axis
+            org_near[a] = vf(r.org[a] + toward), org_far[a] = vf(r.org[a] - toward), inv[a] = vf(1.0f / r.dir[a]);
+        }
     }
     [[gnu::always_inline]] vf entry(const wide_node<N>& n, float t0, float t1, simd::vmask<N>& hit) const {
         vf lo(t0), hi(t1);
         for (int a = 0; a < 3; ++a) {
-            const vf near = (vf::load(this->row(n, this->near_row[a])) - org[a]) * inv[a];
-            const vf far = (vf::load(this->row(n, this->far_row[a])) - org[a]) * inv[a];
+            const vf near = (vf::load(this->row(n, this->near_row[a])) - org_near[a]) * inv[a];
+            const vf far = (vf::load(this->row(n, this->far_row[a])) - org_far[a]) * inv[a];
             lo = simd::max(near, lo);
             hi = simd::min(far, hi);
         }
@@ -212,7 +217,7 @@ template <visit_order Order, int N, int M, class Stats, class Leaf>
     if (fast)
         wide_walk<Order>(tree, s, slack, r, stats, leaf);
     else
-        wide_walk<Order>(tree, wide_robust_slab<N>(r), slack, r, stats, leaf);
+        wide_walk<Order>(tree, wide_robust_slab<N>(r, space_slack(r, tree.bounds)), slack, r, stats, leaf);
 }
 
 }  // namespace strahl::ch13
