@@ -1,5 +1,7 @@
-// Exercise 04.1 the robust slab test (8 points). Only slab_test, on hand-made boxes and rays.
+// Exercise 04.1 the robust slab test (10 points). Only slab_test, on hand-made boxes and rays, and on rays
+// aimed at boxes' edges and corners against a slab test in long double.
 #include "strahl/ch04/traverse.hpp"
+#include "slab_cases.hpp"
 #include <catch2/catch.hpp>
 
 using namespace strahl;
@@ -58,4 +60,27 @@ TEST_CASE("04.1 slab test: direction components of +0 and -0, origins on a slab 
     CHECK(meets(unit, vec3(0, 0.5f, 0.5f), vec3(1, 0.1f, 0)));
     CHECK(meets(unit, vec3(0, 0.5f, 0.5f), vec3(-1, 0.1f, 0)));  // touches at t = 0
     CHECK_FALSE(meets(unit, vec3(0, 0.5f, 0.5f), vec3(-1, 0.1f, 0), 1e-3f, inf));
+}
+
+TEST_CASE("04.1 slab test: conservative, no box the exact ray meets is missed at its edges and corners",
+          "[ch04][pts:2]") {
+    // Rays aimed at (and one or two floats beside) the edges and corners of boxes 1e-3 to 1e3 wide, placed
+    // up to 1e7 from the origin. Where the slab test in long double says the ray meets the box, slab_test
+    // must too: rounding the far plane's t below the near one's would lose the box, and with it every
+    // triangle inside. That is what the exit's widening by 1 + 2 gamma(3) is for.
+    int tested = 0, missed = 0;
+    for (const float offset : {0.0f, 1.0f, 1e3f, 1e5f, 1e7f})
+        for (const float size : {1e-3f, 1.0f, 1e3f})
+            for (const test::grazing_case& k : test::grazing_cases(offset, size, 41, 2000)) {
+                if (!test::exact_entry(k.box, k.r, -1e30L, 1e30L)) continue;
+                ++tested;
+                if (!slab_test(k.box, k.r.org, 1.0f / k.r.dir, -1e30f, 1e30f) && missed++ == 0)
+                    UNSCOPED_INFO("first box missed: box (" << k.box.min.x << ", " << k.box.min.y << ", "
+                                  << k.box.min.z << ") - (" << k.box.max.x << ", " << k.box.max.y << ", "
+                                  << k.box.max.z << "), ray from (" << k.r.org.x << ", " << k.r.org.y << ", "
+                                  << k.r.org.z << ") along (" << k.r.dir.x << ", " << k.r.dir.y << ", "
+                                  << k.r.dir.z << ")");
+            }
+    CHECK(tested > 10000);
+    CHECK(missed == 0);
 }

@@ -87,9 +87,10 @@ TEST_CASE("ch15 structures: every triangle test in chapter 05's fast walk equals
         const std::vector<ray> aimed = aimed_rays(s.mesh, s.mesh.bounds().centroid() + vec3(0.01f, -0.02f, 0.005f));
         rays.insert(rays.end(), aimed.begin(), aimed.end());
         check_exact<test_kind::mt>(s, rays);
+        check_exact<test_kind::watertight>(s, rays);
+        if (test::under_sanitizers) continue;  // the other three forms: the release run's
         check_exact<test_kind::mt_epsilon>(s, rays);
         check_exact<test_kind::mt_edges>(s, rays);
-        check_exact<test_kind::watertight>(s, rays);
         check_exact<test_kind::watertight_double>(s, rays);
     }
 }
