@@ -5,7 +5,8 @@
 // width beside it, and accepts them differently from its neighbours: brute force finds such a hit, while a
 // tree's box test culls a box that the ray really misses, and the two disagree (chapter 15's far.csv).
 //
-// The rule, applied identically by brute force and by every structure (per_ray_accel, chapter 01's world):
+// The rule, applied identically by brute force and by every structure (per_ray_accel; the race's chapter 01
+// tracer; the tests' own brute-force loops; chapter 01's renderer keeps its rays as they are):
 // a query whose origin lies more than 16 diagonals from the centre of the scene's box is answered along the
 // same line from a point a little more than one diagonal before the scene,
 //     org' = org + t0 dir,   interval (tmin - t0, tmax - t0),   t = t' + t0 for the hit,
