@@ -81,7 +81,7 @@ void fast_traverse(const ch04::bvh& tree, ray& r, Stats& stats, LeafTest&& leaf)
     if (const std::optional<fast_slab> s = fast_slab::make(r, tree.bounds))
         walk_with(tree, *s, slack, r, stats, leaf);
     else
-        walk_with(tree, grown_slab(r, space_slack(r, tree.bounds)), slack, r, stats, leaf);
+        walk_with(tree, robust_slab(r, space_slack(r, tree.bounds)), slack, r, stats, leaf);
 }
 
 // fast_traverse as chapter 04's bvh_accel_t's Walk.

@@ -32,9 +32,20 @@ struct plane_choice {
     }
 };
 
+// Every box optionally grown by `grow` on each side (strahl/tree_query.hpp's space_slack), folded into the
+// origin once per ray: the near plane's origin term moves toward the box, the far plane's away. grow = 0
+// (pbrt-v4's test, chapter 15's conservative walk) leaves org as it is. The fast walk grows the boxes for
+// the rays it gives this test: a ray with a zero direction component passing just beside a box can still
+// get a hit from a triangle inside it (the triangle test's rounding); fast_slab's own widening covers that
+// for every other ray.
 struct robust_slab : plane_choice {
-    vec3 org, inv_dir;
-    explicit robust_slab(const ray& r) : plane_choice(r.dir), org(r.org), inv_dir(1.0f / r.dir) {}
+    vec3 org_near, org_far, inv_dir;
+    explicit robust_slab(const ray& r, float grow = 0.0f) : plane_choice(r.dir), inv_dir(1.0f / r.dir) {
+        for (int a = 0; a < 3; ++a) {
+            const float toward = near_plane[a] < 3 ? grow : -grow;  // near plane bmin: going up the axis
+            org_near[a] = r.org[a] + toward, org_far[a] = r.org[a] - toward;
+        }
+    }
 
     // The entry distance of node n's box for t in [t0, t1], or +inf when the ray misses it. Where the origin
     // lies on a plane and the direction component is +-0, that plane's t is NaN (0 * inf); the comparisons are
@@ -42,29 +53,8 @@ struct robust_slab : plane_choice {
     [[gnu::always_inline]] float entry(const ch04::bvh_node& n, float t0, float t1) const {
         const float* planes = n.bmin;
         for (int a = 0; a < 3; ++a) {
-            const float near = (planes[near_plane[a]] - org[a]) * inv_dir[a];
-            const float far = (planes[far_plane[a]] - org[a]) * inv_dir[a];
-            t0 = near > t0 ? near : t0;
-            t1 = far < t1 ? far : t1;
-        }
-        t1 *= t1 > 0.0f ? 1.0f + 2.0f * ch04::gamma(3) : 1.0f - 2.0f * ch04::gamma(3);
-        return t0 <= t1 ? t0 : inf;
-    }
-};
-
-// robust_slab on every box grown by `grow` (strahl/tree_query.hpp's space_slack) on each side: the fast
-// walk's test for rays fast_slab cannot take. A ray with a zero direction component that passes just
-// beside a box can still get a hit from a triangle inside it (the triangle test's rounding); fast_slab's
-// own widening covers that for every other ray.
-struct grown_slab : robust_slab {
-    float grow;
-    grown_slab(const ray& r, float by) : robust_slab(r), grow(by) {}
-    [[gnu::always_inline]] float entry(const ch04::bvh_node& n, float t0, float t1) const {
-        const float* planes = n.bmin;
-        for (int a = 0; a < 3; ++a) {
-            const float out = near_plane[a] < 3 ? -grow : grow;  // the near plane moves toward the origin
-            const float near = (planes[near_plane[a]] + out - org[a]) * inv_dir[a];
-            const float far = (planes[far_plane[a]] - out - org[a]) * inv_dir[a];
+            const float near = (planes[near_plane[a]] - org_near[a]) * inv_dir[a];
+            const float far = (planes[far_plane[a]] - org_far[a]) * inv_dir[a];
             t0 = near > t0 ? near : t0;
             t1 = far < t1 ? far : t1;
         }

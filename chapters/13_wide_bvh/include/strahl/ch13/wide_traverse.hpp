@@ -111,7 +111,7 @@ template <int N>
 std::uint32_t push_ordered_out_of_line(unsigned bits, const float* t, const std::uint32_t* child, stack_entry* stack,
                                        int& top);
 
-// Chapter 05's grown_slab on N boxes, for rays the fast one cannot take (a zero or tiny direction
+// Chapter 05's robust_slab on N boxes, for rays the fast one cannot take (a zero or tiny direction
 // component): each box grown by `grow` (space_slack) on every side, t = (plane - org) * (1 / d), a NaN never
 // wins a comparison, the exit widened by 1 + 2 gamma(3). The growth is folded into the origin: the near
 // plane's origin term moves by grow toward the box, the far plane's away.
