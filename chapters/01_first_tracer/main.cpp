@@ -14,10 +14,6 @@
 #include <iostream>
 #include <vector>
 
-#ifndef STRAHL_TRACK
-#define STRAHL_TRACK "solutions"
-#endif
-
 namespace {
 
 using namespace strahl;
@@ -167,7 +163,7 @@ void sweep(const cli& args, bool quick, const output_plan& plan) {
 }
 
 int run(int argc, const char* const* argv) {
-    cli args("ch01", "Chapter 01, the first tracer (" STRAHL_TRACK "): object-oriented brute-force Whitted ray "
+    cli args("ch01", "Chapter 01, the first tracer (" + std::string(track_name()) + "): object-oriented brute-force Whitted ray "
              "tracing of the Cornell box and the teapot, with rays by kind, Mrays/s and tests per ray.");
     args.option("scene", "NAME", "all", "cornell, teapot or all")
         .option("mesh", "FILE", "", "render a mesh file of your own instead (OBJ, PLY, ...): brute force, slow")
@@ -241,6 +237,6 @@ int run(int argc, const char* const* argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    const bool exercises = std::string(STRAHL_TRACK) == "exercises";
+    const bool exercises = std::string(track_name()) == "exercises";
     return guarded_main(exercises ? "ch01_exercise" : "ch01", run, argc, argv);
 }

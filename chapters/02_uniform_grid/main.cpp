@@ -14,10 +14,6 @@
 #include <fstream>
 #include <memory>
 
-#ifndef STRAHL_TRACK
-#define STRAHL_TRACK "solutions"
-#endif
-
 namespace {
 
 using namespace strahl;
@@ -166,7 +162,7 @@ scene matching_stadium(std::size_t target) {
 }
 
 int run(int argc, const char* const* argv) {
-    cli args("ch02", "Chapter 02, the uniform grid (" STRAHL_TRACK "): 3D-DDA traversal with mailboxing; occupancy, "
+    cli args("ch02", "Chapter 02, the uniform grid (" + std::string(track_name()) + "): 3D-DDA traversal with mailboxing; occupancy, "
              "tests per ray and Mrays/s on the teapot and the teapot in a stadium; box against exact insertion; "
              "lambda swept.");
     args.option("teapot-res", "N", "", "teapot patches tessellated N x N: 64 N^2 triangles (default 12, 6 quick)")
@@ -226,6 +222,6 @@ int run(int argc, const char* const* argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    const bool exercises = std::string(STRAHL_TRACK) == "exercises";
+    const bool exercises = std::string(track_name()) == "exercises";
     return guarded_main(exercises ? "ch02_exercise" : "ch02", run, argc, argv);
 }

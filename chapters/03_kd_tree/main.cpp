@@ -12,10 +12,6 @@
 #include <cstdio>
 #include <iostream>
 
-#ifndef STRAHL_TRACK
-#define STRAHL_TRACK "solutions"
-#endif
-
 namespace {
 
 using namespace strahl;
@@ -89,7 +85,7 @@ void run_scene(const scene& s, const options& o) {
 }
 
 int run(int argc, const char* const* argv) {
-    cli args("ch03", "Chapter 03, the k-d tree (" STRAHL_TRACK "): SAH k-d trees over plain triangles and "
+    cli args("ch03", "Chapter 03, the k-d tree (" + std::string(track_name()) + "): SAH k-d trees over plain triangles and "
              "virtual objects, primary rays through them, tree statistics and the split planes drawn.");
     args.option("scene", "NAME", "all", "teapot, stadium, bunny, sponza or all (all: teapot, stadium, bunny; "
                                         "Sponza only with --sponza)")
@@ -137,6 +133,6 @@ int run(int argc, const char* const* argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    const bool exercises = std::string(STRAHL_TRACK) == "exercises";
+    const bool exercises = std::string(track_name()) == "exercises";
     return guarded_main(exercises ? "ch03_exercise" : "ch03", run, argc, argv);
 }

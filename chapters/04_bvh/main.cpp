@@ -12,10 +12,6 @@
 #include "strahl/program.hpp"
 #include <cstdio>
 
-#ifndef STRAHL_TRACK
-#define STRAHL_TRACK "solutions"
-#endif
-
 namespace {
 
 using namespace strahl;
@@ -93,7 +89,7 @@ void run_scene(const scene& s, const options& o) {
 }
 
 int run(int argc, const char* const* argv) {
-    cli args("ch04", "Chapter 04, the BVH (" STRAHL_TRACK "): object and spatial median BVHs over plain "
+    cli args("ch04", "Chapter 04, the BVH (" + std::string(track_name()) + "): object and spatial median BVHs over plain "
              "triangles and virtual objects, primary rays through them, tree statistics, and box tests per "
              "pixel as a heat map with the boxes of chosen levels drawn over it.");
     args.option("scene", "NAME", "all", "teapot, stadium, bunny or all (all: teapot, stadium, bunny)")
@@ -141,6 +137,6 @@ int run(int argc, const char* const* argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    const bool exercises = std::string(STRAHL_TRACK) == "exercises";
+    const bool exercises = std::string(track_name()) == "exercises";
     return guarded_main(exercises ? "ch04_exercise" : "ch04", run, argc, argv);
 }

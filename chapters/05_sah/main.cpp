@@ -17,10 +17,6 @@
 #include <fstream>
 #include <sstream>
 
-#ifndef STRAHL_TRACK
-#define STRAHL_TRACK "solutions"
-#endif
-
 namespace {
 
 using namespace strahl;
@@ -204,7 +200,7 @@ void write_plots(const scene_rows& all, const fs::path& trade, const fs::path& c
 }
 
 int run(int argc, const char* const* argv) {
-    cli args("ch05", "Chapter 05, the surface area heuristic (" STRAHL_TRACK "): median, full-sweep and binned "
+    cli args("ch05", "Chapter 05, the surface area heuristic (" + std::string(track_name()) + "): median, full-sweep and binned "
              "SAH BVHs on the same rays; build time, SAH cost and Mrays/s per number of bins, as a table, a CSV "
              "file and two plots; box tests per pixel as a heat map, median against SAH.");
     args.option("scene", "NAME", "all", "stadium, bunny, sponza, teapot or all (all: stadium, bunny, sponza)")
@@ -270,6 +266,6 @@ int run(int argc, const char* const* argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    const bool exercises = std::string(STRAHL_TRACK) == "exercises";
+    const bool exercises = std::string(track_name()) == "exercises";
     return guarded_main(exercises ? "ch05_exercise" : "ch05", run, argc, argv);
 }

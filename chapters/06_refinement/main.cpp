@@ -18,10 +18,6 @@
 #include <fstream>
 #include <sstream>
 
-#ifndef STRAHL_TRACK
-#define STRAHL_TRACK "solutions"
-#endif
-
 namespace {
 
 using namespace strahl;
@@ -184,7 +180,7 @@ void write_plots(const std::vector<row>& rows, const fs::path& folder) {
 }
 
 int run(int argc, const char* const* argv) {
-    cli args("ch06", "Chapter 06, refining a BVH (" STRAHL_TRACK "): tree rotations and reinsertion on chapter "
+    cli args("ch06", "Chapter 06, refining a BVH (" + std::string(track_name()) + "): tree rotations and reinsertion on chapter "
              "04's median tree and chapter 05's binned SAH tree; SAH cost against refinement time per "
              "iteration budget, and Mrays/s before and after, as a table, a CSV file and a plot per scene.");
     args.option("scene", "NAME", "all", "stadium, bunny, sponza, teapot or all (all: stadium, bunny, sponza)")
@@ -253,6 +249,6 @@ int run(int argc, const char* const* argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    const bool exercises = std::string(STRAHL_TRACK) == "exercises";
+    const bool exercises = std::string(track_name()) == "exercises";
     return guarded_main(exercises ? "ch06_exercise" : "ch06", run, argc, argv);
 }

@@ -19,10 +19,6 @@
 #include <fstream>
 #include <sstream>
 
-#ifndef STRAHL_TRACK
-#define STRAHL_TRACK "solutions"
-#endif
-
 namespace {
 
 using namespace strahl;
@@ -210,7 +206,7 @@ std::vector<step_row> read_race(const fs::path& csv) {
 }
 
 int run(int argc, const char* const* argv) {
-    cli args("ch11", "Chapter 11, model only what the scene requires (" STRAHL_TRACK "): one tree, the same rays, six "
+    cli args("ch11", "Chapter 11, model only what the scene requires (" + std::string(track_name()) + "): one tree, the same rays, six "
              "ways to reach the primitives (virtual, variant, type-sorted, triangles, inlined, soa), one thread; then "
              "the Whitted renderer with virtual materials, a variant and a switch. Tables, CSV files, plots, an image.");
     args.option("scene", "NAME", "all", "bunny, sponza, stadium or all (all: bunny and Sponza where present, else the stadium)")
@@ -280,6 +276,6 @@ int run(int argc, const char* const* argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    const bool exercises = std::string(STRAHL_TRACK) == "exercises";
+    const bool exercises = std::string(track_name()) == "exercises";
     return guarded_main(exercises ? "ch11_exercise" : "ch11", run, argc, argv);
 }

@@ -16,10 +16,6 @@
 #include <functional>
 #include <sstream>
 
-#ifndef STRAHL_TRACK
-#define STRAHL_TRACK "solutions"
-#endif
-
 namespace {
 
 using namespace strahl;
@@ -146,7 +142,7 @@ void write_plot(const std::vector<row>& rows, const fs::path& svg) {
 }
 
 int run(int argc, const char* const* argv) {
-    cli args("ch13", "Chapter 13, the wide BVH (" STRAHL_TRACK "): chapter 05's binned SAH tree as a binary tree and "
+    cli args("ch13", "Chapter 13, the wide BVH (" + std::string(track_name()) + "): chapter 05's binned SAH tree as a binary tree and "
              "collapsed into 4-, 8- and 16-wide nodes; primary, diffuse and shadow rays on one thread; Mrays/s, "
              "nodes, boxes and triangle lanes per ray, memory; a table, a CSV file and a plot.");
     args.option("scene", "NAME", "all", "stadium, bunny, sponza or all (all: the three; the meshes where present)")
@@ -197,6 +193,6 @@ int run(int argc, const char* const* argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    const bool exercises = std::string(STRAHL_TRACK) == "exercises";
+    const bool exercises = std::string(track_name()) == "exercises";
     return guarded_main(exercises ? "ch13_exercise" : "ch13", run, argc, argv);
 }

@@ -27,10 +27,6 @@
 #include <map>
 #include <sstream>
 
-#ifndef STRAHL_TRACK
-#define STRAHL_TRACK "solutions"
-#endif
-
 namespace {
 
 using namespace strahl;
@@ -386,7 +382,7 @@ std::vector<std::string> scene_specs(const cli& args, bool quick) {
 }
 
 int run(int argc, const char* const* argv) {
-    cli args("ch15", "Chapter 15, robustness (" STRAHL_TRACK "): five triangle tests x three box tests on closed "
+    cli args("ch15", "Chapter 15, robustness (" + std::string(track_name()) + "): five triangle tests x three box tests on closed "
              "spheres from 1e-6 to 1e7, rays aimed at their vertices and edges (escapes), secondary rays spawned with "
              "four offsets (self-hits, leaks), and the accuracy/speed table on the bunny and Sponza.");
     args.option("scenes", "LIST", "", "comma-separated scenes for the speed columns: builtin:NAME or mesh files "
@@ -469,6 +465,6 @@ int run(int argc, const char* const* argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    const bool exercises = std::string(STRAHL_TRACK) == "exercises";
+    const bool exercises = std::string(track_name()) == "exercises";
     return guarded_main(exercises ? "ch15_exercise" : "ch15", run, argc, argv);
 }

@@ -13,6 +13,10 @@ namespace strahl {
 
 struct scene;
 
+// The track a chapter's program was linked with, "solutions" or "exercises": the program links one of
+// common/track/solutions.cpp and common/track/exercises.cpp, so one compiled main.cpp serves both tracks.
+const char* track_name();
+
 // A wrong command line: unknown option, missing or malformed value. Programs print it with the usage.
 class usage_error : public std::runtime_error {
 public:

@@ -1,0 +1,38 @@
+// strahl/parallel.hpp's loops over TBB.
+#include "strahl/parallel.hpp"
+#include <algorithm>
+#include <tbb/blocked_range.h>
+#include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
+
+namespace strahl {
+
+void parallel_for_tiles(int width, int height, int tile_size, const std::function<void(const tile&)>& f) {
+    const int tiles_x = (width + tile_size - 1) / tile_size;
+    const int tiles_y = (height + tile_size - 1) / tile_size;
+    tbb::parallel_for(tbb::blocked_range<int>(0, tiles_x * tiles_y, 1), [&](const tbb::blocked_range<int>& r) {
+        for (int i = r.begin(); i != r.end(); ++i) {
+            const int tx = i % tiles_x, ty = i / tiles_x;
+            const tile t{tx * tile_size, ty * tile_size, std::min(width, (tx + 1) * tile_size),
+                         std::min(height, (ty + 1) * tile_size), i};
+            f(t);
+        }
+    });
+}
+
+void parallel_for_chunks(std::size_t n, std::size_t grain, const std::function<void(std::size_t, std::size_t)>& f) {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, std::max<std::size_t>(1, grain)),
+                      [&](const tbb::blocked_range<std::size_t>& r) { f(r.begin(), r.end()); });
+}
+
+struct thread_limit::control {
+    tbb::global_control limit;
+};
+
+thread_limit::thread_limit(int n) {
+    if (n > 0) control_.reset(new control{tbb::global_control(tbb::global_control::max_allowed_parallelism, n)});
+}
+
+thread_limit::~thread_limit() = default;
+
+}  // namespace strahl
