@@ -6,7 +6,7 @@
 //   chapter <TAB> exercise <TAB> points <TAB> 1|0 (passed) <TAB> test case name
 // A test case passes only if it made at least one assertion and none failed (an exception fails it).
 // ./course grade adds these lines up.
-#define CATCH_CONFIG_MAIN
+#define CATCH_CONFIG_RUNNER
 #include <catch2/catch.hpp>
 #include <cstdio>
 #include <cstdlib>
@@ -40,3 +40,11 @@ struct grading_listener : Catch::TestEventListenerBase {
 }  // namespace
 
 CATCH_REGISTER_LISTENER(grading_listener)
+
+// Floats and doubles print with every digit that tells them apart (9 and 17), so a failing comparison shows
+// 9.99999975e-06f, not 0.0f (Catch2's default precision is 5 digits for float).
+int main(int argc, char* argv[]) {
+    Catch::StringMaker<float>::precision = 9;
+    Catch::StringMaker<double>::precision = 17;
+    return Catch::Session().run(argc, argv);
+}
