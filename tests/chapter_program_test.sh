@@ -44,6 +44,8 @@ case $nn in
     sized=() ;;
 06) args=(--quick --width 48 --repeats 1 --out "$out") files=(refinement.csv sah_vs_time_stadium.svg)
     sized=() ;;
+07) args=(--quick --width 32 --out "$out") files=(build_phases.csv quality.csv sort.csv)
+    sized=() ;;
 11) args=(--quick --width 32 --out "$out") files=(steps.csv render.csv staircase.svg render.png)
     sized=(render.png:"32 32") ;;
 13) args=(--quick --width 32 --repeats 1 --out "$out") files=(wide.csv speedup.svg)
@@ -141,6 +143,18 @@ if [[ $nn == 01 ]]; then
     bad=$(awk -F, 'NR > 1 && ($2 != $5 || !($4 > 0))' "$dir/sweep/sweep.csv")
     [[ -z $bad ]] || fail "--sweep: rows whose tests per ray differ from the primitives or with no speed: $bad"
     contains "$dir/sweep/sweep.svg" "slope -1" "--sweep's plot"
+fi
+
+# Chapter 04's --sweep: per mesh size a brute-force row (tests per ray = N) and three structures, each with
+# far fewer triangle tests per ray than N on the largest mesh, a speed, and the three-panel plot.
+if [[ $nn == 04 ]]; then
+    runs "--sweep" 0 "$program" --sweep --quick --out "$dir/sweep"
+    [[ $(tail -n +2 "$dir/sweep/sweep.csv" | wc -l) -eq 12 ]] || fail "--sweep: sweep.csv has not 12 rows"
+    bad=$(awk -F, 'NR > 1 && $2 == "brute force" && $5 != $1' "$dir/sweep/sweep.csv")
+    [[ -z $bad ]] || fail "--sweep: brute-force rows whose tests per ray are not N: $bad"
+    bad=$(awk -F, 'NR > 1 && $2 != "brute force" && !($6 > 0 && $4 > 0 && $5 * 50 < $1 + 0 || $1 < 1000)' "$dir/sweep/sweep.csv")
+    [[ -z $bad ]] || fail "--sweep: structures without a speed or testing over N/50 triangles per ray at N >= 1000: $bad"
+    contains "$dir/sweep/sweep.svg" "nodes (cells) visited per ray" "--sweep's plot"
 fi
 
 # Chapters 05 and 06 redraw their plots from the table they wrote: the same points, and bad tables are refused.

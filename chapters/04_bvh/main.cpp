@@ -3,14 +3,19 @@
 // build: nodes, leaves, depth, memory, build time, box and triangle tests per ray, Mrays/s. Draws the
 // lecture's picture of the AABB problem: box tests per pixel as a heat map (rays grazing the surface pay
 // most), with the boxes of chosen levels drawn over it.
+#include "strahl/ch02/accel.hpp"
+#include "strahl/ch03/accel.hpp"
 #include "strahl/ch04/accel.hpp"
 #include "strahl/display.hpp"
 #include "strahl/image.hpp"
 #include "strahl/parallel.hpp"
 #include "strahl/procedural.hpp"
 #include "strahl/primary_trace.hpp"
+#include "strahl/plot.hpp"
 #include "strahl/program.hpp"
+#include "strahl/timer.hpp"
 #include <cstdio>
+#include <fstream>
 
 namespace {
 
@@ -88,6 +93,58 @@ void run_scene(const scene& s, const options& o) {
     std::printf("  wrote    %s, %s\n", render_path.string().c_str(), heat_path.string().c_str());
 }
 
+// "Hierarchical, hence logarithmic": the teapot tessellated ever finer, primary rays through the grid, the
+// k-d tree and the BVH (one thread), against brute force, whose every ray tests all N triangles. Writes
+// sweep.csv and sweep.svg: triangle tests per ray and nodes (cells) per ray against N, and Mrays/s.
+void sweep(bool quick, const options& o) {
+    const std::vector<int> resolutions = quick ? std::vector<int>{1, 2, 4} : std::vector<int>{1, 2, 4, 8, 16, 32};
+    const int w = quick ? 48 : 160, h = w * 3 / 4;
+    const fs::path csv_path = o.folder / "sweep.csv", svg_path = o.folder / "sweep.svg";
+    prepare_output(csv_path, o.user_named, o.force);
+    prepare_output(svg_path, o.user_named, o.force);
+    const thread_limit one(1);
+    std::printf("sweep: the teapot tessellated ever finer, %d x %d primary rays, one thread\n", w, h);
+    std::printf("  %9s  %-10s %9s %10s %9s %9s\n", "triangles", "structure", "build ms", "nodes/ray", "tris/ray",
+                "Mrays/s");
+    std::ofstream csv(csv_path);
+    csv << "triangles,structure,build_ms,nodes_per_ray,prim_tests_per_ray,mrays_per_s\n";
+    const char* names[] = {"grid", "k-d tree", "BVH"};
+    std::vector<plot_series> tests(3), nodes(3), speed(3);
+    plot_series brute{"brute force (N)", {}, {}, true, {}, 7};
+    for (int k = 0; k < 3; ++k) tests[k].label = nodes[k].label = speed[k].label = names[k];
+    for (const int res : resolutions) {
+        const scene s = teapot_scene(res);
+        const camera cam(s.camera, w, h);
+        const double n = double(s.mesh.triangle_count());
+        brute.x.push_back(n), brute.y.push_back(n);
+        csv << s.mesh.triangle_count() << ",brute force,0,0," << s.mesh.triangle_count() << ",\n";
+        for (int k = 0; k < 3; ++k) {
+            const auto a = k == 0 ? ch02::make_accel(false) : k == 1 ? ch03::make_accel(false) : make_accel(false);
+            const timer built;
+            a->build(s);
+            const double build_ms = built.milliseconds();
+            const primary_trace r = trace_primary(*a, cam, s.name + " " + names[k]);
+            const double per_node = r.counts.per_ray(r.counts.nodes_visited), per_tri = r.counts.per_ray(r.counts.prim_tests);
+            const double mrays = double(r.hits.size()) / r.seconds * 1e-6;
+            std::printf("  %9zu  %-10s %9.1f %10.1f %9.1f %9.2f\n", s.mesh.triangle_count(), names[k], build_ms,
+                        per_node, per_tri, mrays);
+            csv << s.mesh.triangle_count() << ',' << names[k] << ',' << build_ms << ',' << per_node << ','
+                << per_tri << ',' << mrays << '\n';
+            tests[k].x.push_back(n), tests[k].y.push_back(per_tri);
+            nodes[k].x.push_back(n), nodes[k].y.push_back(per_node);
+            speed[k].x.push_back(n), speed[k].y.push_back(mrays);
+        }
+    }
+    plot pt{"triangle tests per ray", "triangles N", "tests per ray", true, true, {}};
+    pt.series = tests;
+    pt.series.push_back(brute);
+    plot pn{"nodes (cells) visited per ray: log N is a straight line here", "triangles N", "nodes per ray", true,
+            false, nodes};
+    plot ps{"Mrays/s, one thread", "triangles N", "Mrays/s", true, true, speed};
+    write_svg(svg_path, to_svg(std::vector<plot>{pt, pn, ps}, 3, 420, 340));
+    std::printf("  wrote    %s, %s\n", csv_path.string().c_str(), svg_path.string().c_str());
+}
+
 int run(int argc, const char* const* argv) {
     cli args("ch04", "Chapter 04, the BVH (" + std::string(track_name()) + "): object and spatial median BVHs over plain "
              "triangles and virtual objects, primary rays through them, tree statistics, and box tests per "
@@ -100,7 +157,9 @@ int run(int argc, const char* const* argv) {
         .option("threads", "N", "0", "worker threads, 0..1024 (0: one per core)")
         .option("out", "DIR", "", "write the images into DIR/ (default out/04_bvh/)")
         .flag("force", "replace existing files in a folder named with --out")
-        .flag("quick", "smaller images and only the built-in scenes");
+        .flag("quick", "smaller images and only the built-in scenes")
+        .flag("sweep", "measure instead how the grid, the k-d tree and the BVH scale with the triangle count "
+                       "(writes sweep.csv, sweep.svg)");
     if (!args.parse(argc, argv)) return 0;
     const bool quick = args.has("quick");
     const int threads = read_threads(args, 0);
@@ -121,6 +180,10 @@ int run(int argc, const char* const* argv) {
     }
     o.force = args.has("force");
 
+    if (args.has("sweep")) {
+        sweep(quick, o);
+        return 0;
+    }
     const std::string which = args.get("scene");
     if (which != "all" && which != "teapot" && which != "stadium" && which != "bunny")
         throw usage_error("--scene must be teapot, stadium, bunny or all, not '" + which + "'");

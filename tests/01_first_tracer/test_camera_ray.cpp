@@ -32,6 +32,8 @@ TEST_CASE("01.1 camera ray: equals camera::generate at centres, corners and in b
 TEST_CASE("01.1 camera ray: row 0 is on top, column 0 on the left, the field of view is vertical",
           "[ch01][pts:2]") {
     for (const camera& cam : test_cameras()) {
+        INFO("camera " << cam.width() << "x" << cam.height() << ", vertical field of view "
+                       << cam.desc().vfov_degrees << " degrees");
         const float w = float(cam.width()), h = float(cam.height());
         const ray centre = ch01::primary_ray(cam, w / 2, h / 2);
         CHECK(glm::length(centre.dir - cam.forward()) < 1e-6f);

@@ -13,6 +13,7 @@
 #include "test_support.hpp"
 #include <catch2/catch.hpp>
 #include <algorithm>
+#include <string>
 #include <vector>
 
 using namespace strahl;
@@ -23,6 +24,7 @@ constexpr int bin_size = 8;
 
 struct oracle_stats {
     std::size_t pixels = 0, covered = 0, mismatches = 0, unexplained = 0;
+    std::string first_unexplained;  // the first few, one a line
 };
 
 // Triangles binned in screen space, conservatively (see the top).
@@ -76,6 +78,9 @@ std::uint32_t closest(const triangle_mesh& mesh, const screen_bins& sb, const ca
     }
     return id;
 }
+
+// A triangle id in a message: "none" for a miss.
+std::string name_of(std::uint32_t id) { return id == invalid_id ? std::string("none") : std::to_string(id); }
 
 bool share_vertex(const triangle_mesh& mesh, std::uint32_t a, std::uint32_t b) {
     const uvec3 ia = mesh.indices[a], ib = mesh.indices[b];
@@ -136,8 +141,10 @@ oracle_stats compare(const triangle_mesh& mesh, const camera& cam) {
             if (!(silhouette || hit_miss_edge || shared || subpixel || tie)) {
                 ++s.unexplained;
                 if (s.unexplained <= 5)
-                    UNSCOPED_INFO("unexplained mismatch at (" << x << ", " << y << "): traced " << a << " at t = "
-                                  << ta << ", rasterised " << b << " at t = " << tb);
+                    s.first_unexplained += "\n  unexplained mismatch at pixel (" + std::to_string(x) + ", " +
+                                           std::to_string(y) + "): traced triangle " + name_of(a) + " at t = " +
+                                           std::to_string(ta) + ", rasterised " + name_of(b) + " at t = " +
+                                           std::to_string(tb);
             }
         }
     return s;
@@ -149,6 +156,7 @@ void check_against_raster(const std::string& name, const triangle_mesh& mesh, co
               << " differ, " << s.unexplained << " unexplained");
     CHECK(s.covered > s.pixels / 10);  // the mesh is in view
     CHECK(double(s.pixels - s.mismatches) >= 0.995 * double(s.pixels));
+    INFO("the first " << std::min<std::size_t>(s.unexplained, 5) << " unexplained:" << s.first_unexplained);
     CHECK(s.unexplained == 0);
 }
 

@@ -40,6 +40,8 @@ TEST_CASE("ch01 materials: Lambert, mirror and rough mirror samples", "[ch01]") 
     color total(0.0f);
     for (int i = 0; i < 32; ++i) {
         const scatter g = r.sample(glm::normalize(vec3(1, -0.2f, 0)), n, i, rng);
+        INFO("rough mirror sample " << i << " of 32: direction (" << g.dir.x << ", " << g.dir.y << ", " << g.dir.z
+                                    << ")");
         CHECK(glm::dot(g.dir, n) >= 0.0f);
         CHECK(std::abs(glm::length(g.dir) - 1.0f) < 1e-5f);
         total += g.weight;

@@ -95,9 +95,17 @@ void check_against_brute_force(const scene& s, const grid_options& opt, std::siz
         for (std::size_t i = 0; i < rays.size(); ++i) {
             const hit want = brute_closest(set, frame, rays[i]);
             found += want.found();
-            if (!identical(hits[i], want) || !identical(counted[i], want) || (blocked[i] != 0) != brute_any(set, frame, rays[i])) {
-                if (++wrong < 5) UNSCOPED_INFO("ray " << i << ": got t " << hits[i].t << " prim " << hits[i].prim
-                                                      << ", brute force t " << want.t << " prim " << want.prim);
+            const bool want_any = brute_any(set, frame, rays[i]);
+            if (!identical(hits[i], want) || !identical(counted[i], want) || (blocked[i] != 0) != want_any) {
+                const ray& r = rays[i];
+                if (++wrong < 5)
+                    UNSCOPED_INFO("ray " << i << " from (" << r.org.x << ", " << r.org.y << ", " << r.org.z
+                                  << ") along (" << r.dir.x << ", " << r.dir.y << ", " << r.dir.z << "), t in ["
+                                  << r.tmin << ", " << r.tmax << "]: got t " << hits[i].t << " prim " << hits[i].prim
+                                  << " u " << hits[i].u << " v " << hits[i].v << " (counted: t " << counted[i].t
+                                  << " prim " << counted[i].prim << "), occluded " << int(blocked[i] != 0)
+                                  << "; brute force t " << want.t << " prim " << want.prim << " u " << want.u
+                                  << " v " << want.v << ", occluded " << int(want_any));
             }
         }
         INFO(s.name << ", " << (virt ? "virtual" : "triangles") << ", lambda " << opt.lambda << ", cells "

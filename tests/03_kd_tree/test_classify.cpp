@@ -1,9 +1,25 @@
 // Exercise 03.2 classify (5 points). Only classify, on hand-made boxes against the plane y = 2.
 #include "strahl/ch03/sah.hpp"
 #include <catch2/catch.hpp>
+#include <string>
 
 using namespace strahl;
 using namespace strahl::ch03;
+
+// A side prints by name in a failing check ("both == left"), not as its number.
+namespace Catch {
+template <>
+struct StringMaker<strahl::ch03::side> {
+    static std::string convert(strahl::ch03::side s) {
+        switch (s) {
+            case strahl::ch03::side::left: return "left";
+            case strahl::ch03::side::right: return "right";
+            case strahl::ch03::side::both: return "both";
+        }
+        return "side " + std::to_string(int(s));
+    }
+};
+}  // namespace Catch
 
 namespace {
 aabb y_range(float lo, float hi) { return aabb{vec3(-1, lo, 5), vec3(1, hi, 6)}; }

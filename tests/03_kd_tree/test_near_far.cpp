@@ -16,6 +16,8 @@ setup along_x(float ox, float dx) {
     return {r, vec3(1.0f / dx, inf, inf)};
 }
 void check_child(const child_visit& v, int k, int child, float t0, float t1) {
+    INFO("visit " << k << " (" << (k == 0 ? "first" : "second") << ") of " << v.count << ", expected: child "
+                  << child << " (" << (child ? "right" : "left") << ") over t in [" << t0 << ", " << t1 << "]");
     CHECK(int(v.child[k]) == child);
     CHECK(v.t0[k] == Approx(t0));
     CHECK(v.t1[k] == Approx(t1));
@@ -69,6 +71,7 @@ TEST_CASE("03.3 near/far and t-split: a plane behind the ray or beyond the segme
 
 TEST_CASE("03.3 near/far and t-split: directions of +0 and -0, origins on the plane, no NaN", "[ch03][pts:2]") {
     for (const float zero : {0.0f, -0.0f}) {
+        INFO("the direction's x component is " << (std::signbit(zero) ? "-0" : "+0") << ", the plane x = 1");
         const ray below{vec3(0.5f, 0, 0), vec3(zero, 1, 0)}, above{vec3(1.5f, 0, 0), vec3(zero, 1, 0)},
             on{vec3(1.0f, 0, 0), vec3(zero, 1, 0)};
         const vec3 inv(1.0f / zero, 1.0f, inf);
@@ -88,6 +91,7 @@ TEST_CASE("03.3 near/far and t-split: directions of +0 and -0, origins on the pl
     const child_visit d = near_far(tiny, vec3(inf, 1, inf), 0, 1.0f, 0.0f, 3.0f, 0.0f);
     REQUIRE(d.count == 2);
     for (int k = 0; k < 2; ++k) {
+        INFO("visit " << k << ": t in [" << d.t0[k] << ", " << d.t1[k] << "]");
         CHECK_FALSE(std::isnan(d.t0[k]));
         CHECK_FALSE(std::isnan(d.t1[k]));
     }

@@ -43,6 +43,7 @@ TEST_CASE("ch04 BVH: the node is 32 bytes, the tree at most 2N - 1 nodes, leaves
     STATIC_REQUIRE(sizeof(bvh_node) == 32);
     const scene s = teapot_scene(4);
     for (const int leaf_size : {1, 4, 16}) {
+        INFO("leaf size " << leaf_size << " on the teapot");
         bvh_build_params p;
         p.leaf_size = leaf_size;
         const auto a = make_bvh_accel(false, p);
@@ -61,9 +62,13 @@ TEST_CASE("ch04 BVH: the node is 32 bytes, the tree at most 2N - 1 nodes, leaves
             const bvh_node& nd = t.nodes[i];
             const aabb b = nd.box();
             if (nd.is_leaf()) {
-                for (std::uint32_t k = nd.offset; k < nd.offset + nd.count; ++k)
+                for (std::uint32_t k = nd.offset; k < nd.offset + nd.count; ++k) {
+                    INFO("leaf node " << i << "'s box against its triangle " << t.prim_ids[k] << " (prim_ids[" << k
+                                      << "])");
                     CHECK(unite(b, tris.bounds(t.prim_ids[k])).surface_area() == b.surface_area());
+                }
             } else {
+                INFO("inner node " << i << "'s box against its children's, nodes " << i + 1 << " and " << nd.offset);
                 CHECK(unite(b, t.nodes[i + 1].box()).surface_area() == b.surface_area());
                 CHECK(unite(b, t.nodes[nd.offset].box()).surface_area() == b.surface_area());
             }
@@ -93,6 +98,8 @@ TEST_CASE("ch04 BVH: a planar scene, one triangle, an empty scene", "[ch04][adve
 TEST_CASE("ch04 BVH: thousands of identical triangles terminate with bounded depth", "[ch04][adversarial]") {
     const scene s = mesh_only(copies(3000, vec3(0, 0, 0), vec3(1, 0, 0), vec3(0, 1, 0)));
     for (const split_method m : {split_method::object_median, split_method::spatial_median}) {
+        INFO((m == split_method::object_median ? "object median" : "spatial median")
+             << " split, 3000 copies of one triangle, all met by the ray at (0.2, 0.2)");
         const auto a = make_accel(false, m);
         a->build(s);
         // Ties: the lowest id wins, as with brute force.

@@ -16,6 +16,7 @@ bvh_node inner(int axis, std::uint32_t right) {
 
 TEST_CASE("04.3 near child first: the direction's sign on the split axis orders the children", "[ch04][pts:3]") {
     for (int axis = 0; axis < 3; ++axis) {
+        INFO("split axis " << axis);
         const bvh_node n = inner(axis, 9);
         vec3 up(0.3f), down(0.3f);
         up[axis] = 2.0f;

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <numeric>
+#include <sstream>
+#include <string>
 
 using namespace strahl;
 using namespace strahl::ch04;
@@ -13,11 +15,21 @@ std::vector<std::uint32_t> iota(std::size_t n, std::uint32_t from = 0) {
     std::iota(v.begin(), v.end(), from);
     return v;
 }
+std::string list(const std::vector<std::uint32_t>& ids) {
+    std::ostringstream out;
+    for (std::size_t i = 0; i < ids.size(); ++i) out << (i ? ", " : "{") << ids[i];
+    out << "}";
+    return out.str();
+}
 // Every entry left of mid has a centroid <= every entry right of it, on axis; and ids is a permutation.
 void check_partitioned(std::vector<std::uint32_t> ids, const std::vector<vec3>& c, int axis, std::size_t mid,
                        const std::vector<std::uint32_t>& before) {
+    INFO("ids after partition_split " << list(ids) << ", mid " << mid << ", axis " << axis);
     for (std::size_t i = 0; i < mid; ++i)
-        for (std::size_t j = mid; j < ids.size(); ++j) CHECK(c[ids[i]][axis] <= c[ids[j]][axis]);
+        for (std::size_t j = mid; j < ids.size(); ++j) {
+            INFO("ids[" << i << "] = " << ids[i] << " is left of mid, ids[" << j << "] = " << ids[j] << " right of it");
+            CHECK(c[ids[i]][axis] <= c[ids[j]][axis]);
+        }
     std::sort(ids.begin(), ids.end());
     std::vector<std::uint32_t> b = before;
     std::sort(b.begin(), b.end());
@@ -70,6 +82,7 @@ TEST_CASE("04.2 partition: the spatial median cuts the centroid box in the middl
 
 TEST_CASE("04.2 partition: all centroids equal split in half, untouched", "[ch04][pts:2]") {
     for (const split_method m : {split_method::object_median, split_method::spatial_median}) {
+        INFO((m == split_method::object_median ? "object median" : "spatial median") << " split");
         const std::vector<vec3> c(7, vec3(0.5f, -2.0f, 3.0f));
         std::vector<std::uint32_t> ids = {6, 5, 4, 3, 2, 1, 0};
         const split_result s = partition_split(ids, c, m);

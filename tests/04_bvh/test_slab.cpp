@@ -3,6 +3,9 @@
 #include "strahl/ch04/traverse.hpp"
 #include "slab_cases.hpp"
 #include <catch2/catch.hpp>
+#include <cmath>
+#include <iomanip>
+#include <sstream>
 
 using namespace strahl;
 using namespace strahl::ch04;
@@ -43,6 +46,7 @@ TEST_CASE("04.1 slab test: closed boxes, touching counts, flat boxes are hit", "
 
 TEST_CASE("04.1 slab test: direction components of +0 and -0, origins on a slab plane", "[ch04][pts:3]") {
     for (const float z : {0.0f, -0.0f}) {
+        INFO("the zero direction components are " << (std::signbit(z) ? "-0" : "+0"));
         // Parallel to x's slab, inside it, outside it, and exactly on its planes (0 * inf = NaN there).
         CHECK(meets(unit, vec3(0.5f, -1, 0.5f), vec3(z, 1, z)));
         CHECK_FALSE(meets(unit, vec3(1.5f, -1, 0.5f), vec3(z, 1, z)));
@@ -69,18 +73,21 @@ TEST_CASE("04.1 slab test: conservative, no box the exact ray meets is missed at
     // must too: rounding the far plane's t below the near one's would lose the box, and with it every
     // triangle inside. That is what the exit's widening by 1 + 2 gamma(3) is for.
     int tested = 0, missed = 0;
+    std::ostringstream first_missed;  // the first box missed, with every digit of its floats
+    first_missed << std::setprecision(9);
     for (const float offset : {0.0f, 1.0f, 1e3f, 1e5f, 1e7f})
         for (const float size : {1e-3f, 1.0f, 1e3f})
             for (const test::grazing_case& k : test::grazing_cases(offset, size, 41, 2000)) {
                 if (!test::exact_entry(k.box, k.r, -1e30L, 1e30L)) continue;
                 ++tested;
                 if (!slab_test(k.box, k.r.org, 1.0f / k.r.dir, -1e30f, 1e30f) && missed++ == 0)
-                    UNSCOPED_INFO("first box missed: box (" << k.box.min.x << ", " << k.box.min.y << ", "
-                                  << k.box.min.z << ") - (" << k.box.max.x << ", " << k.box.max.y << ", "
-                                  << k.box.max.z << "), ray from (" << k.r.org.x << ", " << k.r.org.y << ", "
-                                  << k.r.org.z << ") along (" << k.r.dir.x << ", " << k.r.dir.y << ", "
-                                  << k.r.dir.z << ")");
+                    first_missed << "(of boxes " << size << " wide at " << offset << " from the origin): box ("
+                                 << k.box.min.x << ", " << k.box.min.y << ", " << k.box.min.z << ") - ("
+                                 << k.box.max.x << ", " << k.box.max.y << ", " << k.box.max.z << "), ray from ("
+                                 << k.r.org.x << ", " << k.r.org.y << ", " << k.r.org.z << ") along ("
+                                 << k.r.dir.x << ", " << k.r.dir.y << ", " << k.r.dir.z << ")";
             }
     CHECK(tested > 10000);
+    INFO(missed << " of " << tested << " boxes the exact ray meets were missed; the first " << first_missed.str());
     CHECK(missed == 0);
 }

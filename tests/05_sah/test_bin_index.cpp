@@ -33,18 +33,25 @@ TEST_CASE("05.2 bin assignment: the clamp at the top bin, below the bottom, and 
     // Rounding: with k / (hi - lo) not exact, a centroid just below hi can compute to k.
     for (const float hi : {0.1f, 0.3f, 0.7f, 1.1f, 3.3f, 1e7f}) {
         const bin_mapping r = make_bin_mapping(0.0f, hi, 7);
+        INFO("7 bins over [0, " << hi << "]");
         CHECK(bin_index(r, hi) == 6);
         CHECK(bin_index(r, std::nextafter(hi, 0.0f)) == 6);
     }
     // 256 bins, every bin reachable and in order.
     const bin_mapping w = make_bin_mapping(10.0f, 11.0f, 256);
-    int last = -1;
+    int last = -1, first_bad = -1, bad_bin = 0, bin_before = 0;
     bool in_order = true;
     for (int i = 0; i <= 2560; ++i) {
         const int b = bin_index(w, 10.0f + float(i) / 2560.0f);
-        in_order = in_order && b >= last && b >= 0 && b < 256;
+        const bool ok = b >= last && b >= 0 && b < 256;
+        if (!ok && in_order) first_bad = i, bad_bin = b, bin_before = last;
+        in_order = in_order && ok;
         last = b;
     }
-    CHECK(in_order);
+    {
+        INFO("256 bins over [10, 11]: first out of order or out of [0, 256) at centroid 10 + " << first_bad
+             << "/2560: bin " << bad_bin << " after bin " << bin_before);
+        CHECK(in_order);
+    }
     CHECK(last == 255);
 }

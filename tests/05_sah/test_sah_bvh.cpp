@@ -10,6 +10,7 @@
 #include "strahl/scene.hpp"
 #include <algorithm>
 #include <limits>
+#include <string>
 #include <catch2/catch.hpp>
 
 using namespace strahl;
@@ -80,6 +81,7 @@ TEST_CASE("ch05 SAH: two clusters are split apart, and leaves end where splittin
         m.indices.push_back(uvec3(base, base + 1, base + 2));
     }
     for (const sah_build_params& p : all_params()) {
+        INFO(to_string(p) << ", max_leaf " << p.max_leaf << " on two clusters at x = 0 and x = 10");
         const auto a = make_accel(false, p);
         a->build(mesh_only(m));
         const ch04::bvh& t = a->tree();
@@ -120,6 +122,7 @@ TEST_CASE("ch05 SAH: lower cost than the median split, the sweep no worse than b
     std::vector<int> seen(s.mesh.triangle_count(), 0);
     for (const ch04::bvh_node& n : t.nodes)
         if (n.is_leaf()) {
+            INFO("binned16's leaf node " << (&n - t.nodes.data()));
             CHECK(n.count <= 8);
             for (std::uint32_t k = n.offset; k < n.offset + n.count; ++k) ++seen[t.prim_ids[k]];
         }
@@ -168,6 +171,7 @@ TEST_CASE("ch05 SAH: centroids in a geometric series keep the depth bounded", "[
     }
     for (const sah_build_params& p : all_params()) {
         const auto a = make_accel(false, p, walk_kind::fast);
+        INFO(a->name() << ", max_leaf " << p.max_leaf << " on 400 triangles in a geometric series");
         a->build(mesh_only(m));
         CHECK(a->tree().stats.depth <= ch04::bvh_max_depth);
         CHECK(test::disagreements_with_brute_force(*a, m, test::nasty_rays(a->tree(), 200, 3)) == 0);
@@ -186,13 +190,20 @@ struct builder_input {
     }
 };
 
+// A node in a failure message: its count, offset (first primitive or right child) and split axis.
+std::string describe(const ch04::bvh_node& n) {
+    return "count " + std::to_string(n.count) + ", offset " + std::to_string(n.offset) + ", axis " +
+           std::to_string(int(n.axis));
+}
+
 // Node for node: the same boxes (compared as values: the two may differ in the sign of a zero), splits and
 // leaves; a leaf's primitives as a set (the two partitions leave them in different orders).
 void check_same_tree(const ch04::bvh& a, const ch04::bvh& b) {
     REQUIRE(a.nodes.size() == b.nodes.size());
     CHECK(a.loose == b.loose);
     CHECK(a.stats.depth == b.stats.depth);
-    std::size_t differing = 0;
+    std::size_t differing = 0, first = 0;
+    std::string first_pair;
     for (std::size_t i = 0; i < a.nodes.size(); ++i) {
         const ch04::bvh_node &x = a.nodes[i], &y = b.nodes[i];
         bool same = x.count == y.count && x.offset == y.offset && (x.count > 0 || x.axis == y.axis);
@@ -203,8 +214,10 @@ void check_same_tree(const ch04::bvh& a, const ch04::bvh& b) {
             std::sort(p.begin(), p.end()), std::sort(q.begin(), q.end());
             same = p == q;
         }
-        differing += !same;
+        if (!same && differing++ == 0) first = i, first_pair = describe(x) + " against " + describe(y);
     }
+    INFO("of " << a.nodes.size() << " nodes, the first that differs is node " << first << ": " << first_pair
+               << " (where these agree, the boxes or the leaf's primitives differ)");
     CHECK(differing == 0);
 }
 

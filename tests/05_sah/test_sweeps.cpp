@@ -3,6 +3,8 @@
 #include "strahl/ch05/sah.hpp"
 #include "strahl/rng.hpp"
 #include <catch2/catch.hpp>
+#include <sstream>
+#include <string>
 #include <vector>
 
 using namespace strahl;
@@ -25,6 +27,16 @@ bin_split one_by_one(const std::vector<bin>& bins, const sah_costs& c, float are
         if (cost < best.cost) best = {int(b), cost};
     }
     return best;
+}
+
+// The bins' counts, for a failure message (only for a few bins; an empty bin counts 0).
+std::string counts_of(const std::vector<bin>& bins) {
+    if (bins.size() > 8) return std::to_string(bins.size()) + " bins (too many to list)";
+    std::ostringstream out;
+    out << "bin counts [";
+    for (std::size_t i = 0; i < bins.size(); ++i) out << (i ? ", " : "") << bins[i].count;
+    out << "]";
+    return out.str();
 }
 
 }  // namespace
@@ -71,6 +83,8 @@ TEST_CASE("05.3 sweeps: random bins, the same boundary and cost as every boundar
             std::vector<float> scratch(std::size_t(k), -1.0f);
             const bin_split s = best_boundary(bins, scratch, c, all.surface_area());
             const bin_split ref = one_by_one(bins, c, all.surface_area());
+            INFO("k = " << k << " bins, trial " << trial << ": " << counts_of(bins) << ", C_T " << c.traversal
+                        << ", C_I " << c.intersection << ", parent area " << all.surface_area());
             CHECK(s.index == ref.index);
             CHECK(s.cost == Approx(ref.cost).epsilon(1e-5));
             ++checked;

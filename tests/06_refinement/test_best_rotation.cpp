@@ -9,11 +9,20 @@ using test::bar;
 using test::box;
 using test::same_box;
 
+// A rotation prints by name in a failing check ("left_right_left == none"), not as its number.
+namespace Catch {
+template <>
+struct StringMaker<strahl::ch06::rotation> {
+    static std::string convert(strahl::ch06::rotation r) { return strahl::ch06::to_string(r); }
+};
+}  // namespace Catch
+
 namespace {
 // Every link agrees with its back link, and every inner node's box and height with its children's.
 void check_consistent(const refine_tree& t) {
     for (std::uint32_t i = 0; i < t.nodes.size(); ++i) {
         const refine_node& n = t.nodes[i];
+        INFO((n.is_leaf() ? "leaf " : "inner node ") << i);
         if (n.is_leaf()) {
             CHECK(n.height == 0);
             continue;
@@ -80,6 +89,7 @@ TEST_CASE("06.2 best rotation: no gain, or too deep: nothing changes", "[ch06][p
     CHECK(c3.r == rotation::none);
     CHECK(c3.delta == 0.0f);
     for (std::size_t i = 0; i < t3.nodes.size(); ++i) {
+        INFO("tree 3's node " << i << ": its children must not change");
         CHECK(t3.nodes[i].left == before.nodes[i].left);
         CHECK(t3.nodes[i].right == before.nodes[i].right);
     }

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <numeric>
+#include <string>
 
 using namespace strahl;
 using namespace strahl::ch06;
@@ -42,14 +43,18 @@ int check_node(const ch04::bvh& t, std::uint32_t i, const std::vector<aabb>& box
     const aabb b = n.box();
     if (n.is_leaf()) {
         for (std::uint32_t k = n.offset; k < n.offset + n.count; ++k) {
+            INFO("leaf node " << i << "'s box against its primitive " << t.prim_ids[k] << "'s (prim_ids[" << k << "])");
             CHECK(contains(b, boxes[t.prim_ids[k]]));
             ++seen[t.prim_ids[k]];
         }
         return 0;
     }
-    CHECK(n.axis < 3);
-    CHECK(contains(b, t.nodes[i + 1].box()));
-    CHECK(contains(b, t.nodes[n.offset].box()));
+    {
+        INFO("inner node " << i << ", children nodes " << i + 1 << " and " << n.offset);
+        CHECK(n.axis < 3);
+        CHECK(contains(b, t.nodes[i + 1].box()));
+        CHECK(contains(b, t.nodes[n.offset].box()));
+    }
     return 1 + std::max(check_node(t, i + 1, boxes, seen), check_node(t, n.offset, boxes, seen));
 }
 
@@ -71,6 +76,10 @@ void check_structure(const ch04::bvh& t, const inputs& in, int max_depth) {
     CHECK(depth <= max_depth);
     CHECK(test::same_box(t.bounds, t.nodes[0].box()));
     for (const std::uint32_t l : t.loose) ++seen[l];
+    const auto odd = std::find_if(seen.begin(), seen.end(), [](int s) { return s != 1; });
+    INFO("every primitive in exactly one leaf or loose; the first that is not: "
+         << (odd == seen.end() ? std::string("none") : "primitive " + std::to_string(odd - seen.begin()) + ", seen " +
+                                                           std::to_string(*odd) + " times"));
     CHECK(std::all_of(seen.begin(), seen.end(), [](int s) { return s == 1; }));
 }
 
@@ -150,6 +159,7 @@ TEST_CASE("ch06 refinement: the depth bound holds when it is tight", "[ch06]") {
     for (const refine_method m : {refine_method::rotations, refine_method::reinsertion}) {
         ch04::bvh t = ch04::build_bvh(in.boxes, in.centroids);
         const int depth = t.stats.depth;
+        INFO(to_string(m) << " on the teapot's median tree, max_depth " << depth + 1 << " (its depth + 1)");
         refine_params p;
         p.method = m;
         p.max_depth = depth + 1;

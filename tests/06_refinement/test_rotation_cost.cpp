@@ -28,8 +28,10 @@ TEST_CASE("06.1 rotation cost: a leaf child cannot be rotated into, none costs n
     CHECK(rotation_cost(k.t, k.n, rotation::none, 1.0f) == 0.0f);
     // R's children are both leaves: nothing can be rotated at R.
     for (const rotation r : {rotation::left_right_left, rotation::left_right_right, rotation::right_left_left,
-                             rotation::right_left_right})
+                             rotation::right_left_right}) {
+        INFO("rotation " << to_string(r) << " at R, whose children are both leaves");
         CHECK(std::isinf(rotation_cost(k.t, k.r, r, 1.0f)));
+    }
     // The tree is not changed by evaluating.
     CHECK(k.t.nodes[k.r].left == k.x);
     CHECK(k.t.nodes[k.n].left == k.a);
