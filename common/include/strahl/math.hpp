@@ -3,6 +3,7 @@
 #include <glm/glm.hpp>
 #include <cmath>
 #include <cstdint>
+#include <iosfwd>
 #include <limits>
 
 namespace strahl {
@@ -27,3 +28,12 @@ inline int max_axis(const vec3& v) { return v.x >= v.y ? (v.x >= v.z ? 0 : 2) : 
 inline vec3 reflect(const vec3& d, const vec3& n) { return d - 2.0f * glm::dot(d, n) * n; }
 
 }  // namespace strahl
+
+namespace glm {
+// Vectors print as "(x, y, z)", floats with 9 digits (every digit that tells two floats apart): for test
+// failures (Catch2 finds these by argument-dependent lookup) and logs. common/src/math.cpp.
+std::ostream& operator<<(std::ostream& os, const vec2& v);
+std::ostream& operator<<(std::ostream& os, const vec3& v);
+std::ostream& operator<<(std::ostream& os, const ivec3& v);
+std::ostream& operator<<(std::ostream& os, const uvec3& v);
+}  // namespace glm
