@@ -90,6 +90,20 @@ void render_job(const job& j, const cli& args, const output_plan& plan) {
                    [](float n) { return std::log2(std::max(1.0f, n)); });
     write_image(heat_path, heat_map(log_rays, j.width, j.height, "log2 of rays per pixel"));
     const float most = *std::max_element(r.rays_per_pixel.begin(), r.rays_per_pixel.end());
+    // The pixels whose primary ray meets a rough mirror: there the S samples per glossy hit are paid, which
+    // the average over the whole image dilutes.
+    double rough_rays = 0.0;
+    std::size_t rough_pixels = 0;
+    counting uncounted;
+    for (int y = 0; y < j.height; ++y)
+        for (int x = 0; x < j.width; ++x) {
+            surface sf;
+            if (!w.closest_hit(cam.pixel_ray(x, y), sf, uncounted)) continue;
+            const std::uint32_t m = w.primitives[sf.h.prim]->material();
+            if (m >= j.s.materials.size() || j.s.materials[m].kind != material_kind::rough_mirror) continue;
+            rough_rays += r.rays_per_pixel[std::size_t(y) * j.width + x];
+            ++rough_pixels;
+        }
 
     const auto pixels = std::uint64_t(j.width) * std::uint64_t(j.height);
     const counter_values c = r.counts.tests.values();
@@ -101,6 +115,10 @@ void render_job(const job& j, const cli& args, const output_plan& plan) {
                 grouped(r.counts.primary).c_str(), grouped(r.counts.shadow).c_str(),
                 grouped(r.counts.reflection).c_str(), grouped(r.counts.total()).c_str(),
                 double(r.counts.total()) / double(pixels), double(most));
+    if (rough_pixels > 0)
+        std::printf("  rough    %s pixels (%.1f%%) see a rough mirror first: %.2f rays per pixel there\n",
+                    grouped(rough_pixels).c_str(), 100.0 * double(rough_pixels) / double(pixels),
+                    rough_rays / double(rough_pixels));
     std::printf("  time     %.2f s, %.2f Mrays/s, %.1f primitive tests per ray\n", r.seconds,
                 double(r.counts.total()) / r.seconds * 1e-6, c.per_ray(c.prim_tests));
     std::printf("  wrote    %s, %s\n", path.string().c_str(), heat_path.string().c_str());
