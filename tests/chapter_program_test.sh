@@ -31,7 +31,7 @@ case $nn in
 01) args=(--quick --width 40 --out "$out/") files=(cornell.png cornell_rays.png teapot.png teapot_rays.png)
     sized=(teapot.png:"40 30" cornell.png:"40 40") ;;
 02) args=(--quick --width 64 --out "$out") files=(teapot.png teapot_tests.png stadium.png stadium_tests.png
-        lambda_sweep.csv lambda_sweep.svg histogram.svg)
+        lambda_sweep.csv lambda_sweep.svg histogram.svg histogram.csv)
     sized=(teapot.png:"64 48") ;;
 03) args=(--quick --width 64 --out "$out") files=(teapot.png teapot_planes.png teapot_stadium.png
         teapot_stadium_planes.png)
@@ -145,6 +145,13 @@ if [[ $nn == 01 ]]; then
     bad=$(awk -F, 'NR > 1 && ($2 != $5 || !($4 > 0))' "$dir/sweep/sweep.csv")
     [[ -z $bad ]] || fail "--sweep: rows whose tests per ray differ from the primitives or with no speed: $bad"
     contains "$dir/sweep/sweep.svg" "slope -1" "--sweep's plot"
+fi
+
+# Chapter 02's histogram: the shares of the references add up to 100% in each scene.
+if [[ $nn == 02 ]]; then
+    bad=$(awk -F, 'NR > 1 { t += $3; s += $4 } END { if (t < 99.9 || t > 100.1 || s < 99.9 || s > 100.1) print t, s }' \
+          "$out/histogram.csv")
+    [[ -z $bad ]] || fail "histogram.csv: the shares of the references add up to $bad, not 100 and 100"
 fi
 
 # Chapter 04's --sweep: per mesh size a brute-force row (tests per ray = N) and three structures, each with

@@ -192,7 +192,7 @@ int run(int argc, const char* const* argv) {
                  "a " + std::to_string(ctx.width) + " x " + std::to_string(ctx.height) + " image");
 
     // Refuse before spending the time: every file this run writes.
-    for (const char* f : {"teapot.png", "teapot_tests.png", "stadium.png", "stadium_tests.png", "histogram.svg",
+    for (const char* f : {"teapot.png", "teapot_tests.png", "stadium.png", "stadium_tests.png", "histogram.svg", "histogram.csv",
                           "lambda_sweep.csv", "lambda_sweep.svg"})
         ctx.file(f);
     const scene teapot = teapot_scene(res);
@@ -204,16 +204,30 @@ int run(int argc, const char* const* argv) {
     // A quarter of the width: in the stadium a ray costs a thousand tests, and the default run stays short.
     render_scene(ctx, stadium, "stadium", opt, &occ_stadium, 4);
 
-    // The histogram of triangles per cell, both scenes, as a share of the cells.
-    bar_chart h{"ch02: cells holding k triangles (lambda " + args.get("lambda") + ")", "% of cells", {}, {"teapot", "teapot in a stadium"}, {{}, {}}, true};
-    for (std::size_t k = 0; k < occ_teapot.histogram.size(); ++k) {
-        h.categories.push_back(k + 1 == occ_teapot.histogram.size() ? std::to_string(k) + "+" : std::to_string(k));
-        h.values[0].push_back(100.0 * double(occ_teapot.histogram[k]) / double(occ_teapot.cells));
-        h.values[1].push_back(100.0 * double(occ_stadium.histogram[k]) / double(occ_stadium.cells));
+    // What a ray meets: the share of the triangle references that sit in cells holding k triangles, k in
+    // log2 bins (1, 2-3, 4-7, ...). A share of the cells would hide the stadium's crowd: its cells are
+    // mostly empty, while most of its references lie in a few cells of thousands.
+    std::size_t bins = 1;
+    for (const grid_stats* o : {&occ_teapot, &occ_stadium})
+        for (std::size_t b = 0; b < o->refs_by_log2.size(); ++b)
+            if (o->refs_by_log2[b]) bins = std::max(bins, b + 1);
+    bar_chart h{"ch02: where the references lie: cells holding k triangles (lambda " + args.get("lambda") + ")",
+                "% of the triangle references", {}, {"teapot", "teapot in a stadium"}, {{}, {}}, false};
+    const fs::path hist_csv = ctx.file("histogram.csv");
+    std::ofstream csv(hist_csv);
+    csv << "triangles_per_cell_from,triangles_per_cell_to,teapot_refs_percent,stadium_refs_percent\n";
+    for (std::size_t b = 0; b < bins; ++b) {
+        const std::size_t lo = std::size_t(1) << b, hi = (std::size_t(2) << b) - 1;
+        h.categories.push_back(lo == hi ? std::to_string(lo) : std::to_string(lo) + "-" + std::to_string(hi));
+        const double t = 100.0 * double(occ_teapot.refs_by_log2[b]) / double(std::max<std::size_t>(1, occ_teapot.references));
+        const double st = 100.0 * double(occ_stadium.refs_by_log2[b]) / double(std::max<std::size_t>(1, occ_stadium.references));
+        h.values[0].push_back(t);
+        h.values[1].push_back(st);
+        csv << lo << ',' << hi << ',' << t << ',' << st << '\n';
     }
     const fs::path hist = ctx.file("histogram.svg");
     write_svg(hist, to_svg(h));
-    std::printf("  wrote    %s\n", hist.string().c_str());
+    std::printf("  wrote    %s, %s\n", hist.string().c_str(), hist_csv.string().c_str());
     box_vs_exact(ctx, teapot);
     lambda_sweep(ctx, teapot, quick);
     return 0;

@@ -6,6 +6,7 @@
 #include <catch2/catch.hpp>
 #include <bit>
 #include <cmath>
+#include <numeric>
 
 using namespace strahl;
 using namespace strahl::ch02;
@@ -205,6 +206,17 @@ TEST_CASE("ch02 grid: cell storage holds every triangle in the cells of its box"
     const grid_stats s = occupancy(g, c, set.size());
     CHECK(s.references == c.prims.size());
     CHECK(s.references_per_prim >= 1.0);
+    // The references by log2 of their cell's count: they add up, and each bin holds what its cells hold.
+    REQUIRE(s.refs_by_log2.size() == 16);
+    std::vector<std::size_t> expect(16, 0);
+    for (std::size_t i = 0; i + 1 < c.offsets.size(); ++i) {
+        const std::size_t k = c.offsets[i + 1] - c.offsets[i];
+        std::size_t b = 0;
+        while (b < 15 && (std::size_t(2) << b) <= k) ++b;
+        if (k > 0) expect[b] += k;
+    }
+    CHECK(s.refs_by_log2 == expect);
+    CHECK(std::accumulate(s.refs_by_log2.begin(), s.refs_by_log2.end(), std::size_t(0)) == s.references);
 }
 
 namespace {

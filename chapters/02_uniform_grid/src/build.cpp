@@ -4,6 +4,7 @@
 #include "strahl/ch02/build.hpp"
 #include <algorithm>
 #include <atomic>
+#include <bit>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -127,11 +128,13 @@ grid_stats occupancy(const grid_dims& g, const grid_cells& c, std::size_t prims,
     s.cells = std::size_t(g.cell_count());
     s.references = c.prims.size();
     s.histogram.assign(std::max<std::size_t>(bins, 1), 0);
+    s.refs_by_log2.assign(16, 0);
     for (std::size_t i = 0; i < s.cells; ++i) {
         const std::size_t k = c.offsets[i + 1] - c.offsets[i];
         s.empty_cells += k == 0;
         s.max_per_cell = std::max(s.max_per_cell, k);
         ++s.histogram[std::min(k, s.histogram.size() - 1)];
+        if (k > 0) s.refs_by_log2[std::min<std::size_t>(std::bit_width(k) - 1, 15)] += k;
     }
     if (s.cells) s.mean_per_cell = double(s.references) / double(s.cells);
     if (s.cells > s.empty_cells) s.mean_per_nonempty = double(s.references) / double(s.cells - s.empty_cells);

@@ -55,6 +55,9 @@ struct grid_stats {
     double mean_per_nonempty = 0.0;    // over the cells holding something
     double references_per_prim = 0.0;
     std::vector<std::size_t> histogram;  // histogram[k]: cells holding k primitives (last bin: k or more)
+    // What a ray meets: refs_by_log2[b] counts the references held by cells of 2^b to 2^(b+1) - 1
+    // primitives (b = 0 .. 15; the last bin: 2^15 or more). They sum to `references`.
+    std::vector<std::size_t> refs_by_log2;
 };
 grid_stats occupancy(const grid_dims& g, const grid_cells& c, std::size_t prims, std::size_t bins = 16);
 
