@@ -90,7 +90,10 @@ public:
     }
 
     std::string name() const override {
-        std::string n = config_.build_quality == embree_config::quality::high ? "embree-high" : "embree-medium";
+        using q = embree_config::quality;
+        std::string n = config_.build_quality == q::high  ? "embree-high"
+                        : config_.build_quality == q::low ? "embree-low"
+                                                          : "embree-medium";
         return config_.packet_image_width > 0 ? n + "-packet8" : n;
     }
     bool exact() const override { return false; }
@@ -105,15 +108,13 @@ public:
         }
         if (scene_) rtcReleaseScene(scene_);
         scene_ = rtcNewScene(device_);
-        rtcSetSceneBuildQuality(scene_, config_.build_quality == embree_config::quality::high ? RTC_BUILD_QUALITY_HIGH
-                                                                                              : RTC_BUILD_QUALITY_MEDIUM);
+        rtcSetSceneBuildQuality(scene_, quality());
         const std::size_t nv = s.mesh.positions.size(), nt = s.mesh.triangle_count();
         bytes_ = 0;
         vertices_ = triangles_ = 0;
         if (nt > 0) {
             RTCGeometry geom = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
-            rtcSetGeometryBuildQuality(geom, config_.build_quality == embree_config::quality::high ? RTC_BUILD_QUALITY_HIGH
-                                                                                                   : RTC_BUILD_QUALITY_MEDIUM);
+            rtcSetGeometryBuildQuality(geom, quality());
             // Embree copies into buffers it owns (and pads for its 16-byte loads).
             auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
                                                                    3 * sizeof(float), nv));
@@ -180,6 +181,12 @@ public:
     std::size_t memory_bytes() const override { return bytes_; }
 
 private:
+    RTCBuildQuality quality() const {
+        using q = embree_config::quality;
+        return config_.build_quality == q::high  ? RTC_BUILD_QUALITY_HIGH
+               : config_.build_quality == q::low ? RTC_BUILD_QUALITY_LOW
+                                                 : RTC_BUILD_QUALITY_MEDIUM;
+    }
     // The course's rays are open intervals (tmin, tmax). Embree's triangle test already excludes t = tnear
     // (absDen * tnear < T) but accepts t = tfar (T <= absDen * tfar): tnear is tmin, and tfar is tmax moved
     // inwards by one ulp. (tnear = nextafter(tmin) would be a denormal for tmin = 0: slow, and read as 0

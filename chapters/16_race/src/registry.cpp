@@ -7,6 +7,7 @@
 #include "strahl/ch04/accel.hpp"
 #include "strahl/ch05/accel.hpp"
 #include "strahl/ch06/accel.hpp"
+#include "strahl/ch07/accel.hpp"
 #include "strahl/ch11/steps.hpp"
 #include "strahl/ch13/accel.hpp"
 #include "strahl/ch15/accel.hpp"
@@ -27,6 +28,12 @@ ch06::refine_params refined(ch06::start_tree start, ch06::refine_method method) 
     p.start = start;
     p.method = method;
     return p;
+}
+// Chapter 07: an LBVH walked by chapter 05's fast traversal.
+accel_entry lbvh(std::string name, std::string description, ch07::hierarchy_method h, int bits_per_axis) {
+    ch07::lbvh_params p;
+    p.hierarchy = h, p.bits_per_axis = bits_per_axis;
+    return {std::move(name), "07", std::move(description), [p] { return std::unique_ptr<accel>(ch07::make_accel(p)); }};
 }
 // Chapter 11: one step of devirtualization over chapter 05's binned SAH tree and fast walk.
 accel_entry ch11_step(ch11::step s) {
@@ -85,6 +92,11 @@ std::vector<accel_entry> registered_accels(const registry_options& o) {
              return ch06::make_accel(false, refined(ch06::start_tree::binned16, ch06::refine_method::reinsertion),
                                      ch05::walk_kind::fast);
          }},
+        lbvh("ch07-lbvh30-fast", "LBVH: 30-bit Morton codes, radix sort, the lecture's top-down split search, SAH "
+             "collapse; chapter 05's fast walk", ch07::hierarchy_method::lecture, 10),
+        lbvh("ch07-lbvh63-fast", "the same LBVH with 63-bit Morton codes", ch07::hierarchy_method::lecture, 21),
+        lbvh("ch07-karras30-fast", "LBVH, 30-bit codes, Karras's parallel hierarchy (HPG 2012); chapter 05's fast walk",
+             ch07::hierarchy_method::karras, 10),
         ch11_step(ch11::step::virtual_calls), ch11_step(ch11::step::variant), ch11_step(ch11::step::type_sorted),
         ch11_step(ch11::step::triangles_only), ch11_step(ch11::step::inlined), ch11_step(ch11::step::soa),
         wide("ch13-bvh4", "chapter 05's binned SAH tree collapsed greedily into 4-wide nodes, leaves in blocks of 4 triangles",
@@ -114,6 +126,8 @@ std::vector<accel_entry> registered_accels(const registry_options& o) {
     };
     if (embree_available()) {
         using q = embree_config::quality;
+        list.push_back({"embree-low", "--", "Embree 3, low build quality (its Morton-code build), rtcIntersect1/rtcOccluded1",
+                        [o] { return make_embree_accel({q::low, 0, o.threads}); }});
         list.push_back({"embree-medium", "--", "Embree 3, medium build quality, rtcIntersect1/rtcOccluded1",
                         [o] { return make_embree_accel({q::medium, 0, o.threads}); }});
         list.push_back({"embree-high", "--", "Embree 3, high build quality (spatial splits), rtcIntersect1/rtcOccluded1",

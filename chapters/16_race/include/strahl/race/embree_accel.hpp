@@ -30,7 +30,7 @@ struct embree_call_probe {
 };
 
 struct embree_config {
-    enum class quality { medium, high } build_quality = quality::medium;
+    enum class quality { low, medium, high } build_quality = quality::medium;  // low: Embree's Morton-code build
     // Trace primary rays with rtcIntersect8 on 4x2 pixel tiles of an image this wide (rays in scanline
     // order, as the race writes them); 0 traces one ray at a time with rtcIntersect1 / rtcOccluded1.
     int packet_image_width = 0;

@@ -1,0 +1,248 @@
+// ch07: linear BVHs. Builds the LBVH (30- and 63-bit Morton codes, the lecture's hierarchy and Karras's)
+// over the teapot in a stadium, a random triangle soup, the bunny and Sponza (when the shared meshes are
+// there), and measures: the build's phases at 1 and N threads; the trees' SAH cost and trace speed against
+// chapter 05's binned SAH tree on the same rays (every tree's hits checked against it); and the radix sort
+// against std::sort and tbb::parallel_sort on the same keys.
+#include "strahl/ch01/primitive_sets.hpp"
+#include "strahl/ch01/ray_sets.hpp"
+#include "strahl/ch05/accel.hpp"
+#include "strahl/ch07/accel.hpp"
+#include "strahl/ch07/morton.hpp"
+#include "strahl/ch07/radix_sort.hpp"
+#include "strahl/parallel.hpp"
+#include "strahl/procedural.hpp"
+#include "strahl/program.hpp"
+#include "strahl/scene.hpp"
+#include "strahl/timer.hpp"
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <tbb/parallel_sort.h>
+#include <thread>
+
+namespace {
+
+using namespace strahl;
+using namespace strahl::ch07;
+namespace fs = std::filesystem;
+
+struct options {
+    int width = 192, height = 144, repeats = 3, threads = 2;
+    fs::path folder{"out/07_lbvh"};
+};
+
+// What every builder sees: one box and one centroid per triangle (as chapter 04's accel hands them over).
+struct inputs {
+    std::vector<aabb> boxes;
+    std::vector<vec3> centroids;
+    explicit inputs(const scene& s) {
+        const ch01::triangle_set tris(s.mesh);
+        for (std::uint32_t i = 0; i < tris.size(); ++i) boxes.push_back(tris.bounds(i)), centroids.push_back(boxes.back().centroid());
+    }
+};
+
+std::vector<lbvh_params> variants() {
+    std::vector<lbvh_params> list;
+    for (const hierarchy_method h : {hierarchy_method::lecture, hierarchy_method::karras})
+        for (const int bits : {10, 21}) {
+            lbvh_params p;
+            p.hierarchy = h, p.bits_per_axis = bits;
+            list.push_back(p);
+        }
+    return list;
+}
+
+// The thread counts the builds and sorts are timed at: 1 and o.threads.
+std::vector<int> thread_counts(const options& o) { return o.threads == 1 ? std::vector<int>{1} : std::vector<int>{1, o.threads}; }
+
+// Build phases: per builder and thread count, the median of each phase over o.repeats builds.
+void time_phases(const std::string& name, const inputs& in, const options& o, std::ostringstream& csv,
+                 std::vector<double>& build_ms_one_thread) {
+    std::printf("  %-9s %7s %8s %8s %9s %8s %8s %8s   (ms, median of %d)\n", "builder", "threads", "codes", "sort",
+                "hierarchy", "boxes", "collapse", "total", o.repeats);
+    for (const lbvh_params& p : variants())
+        for (const int threads : thread_counts(o)) {
+            const thread_limit limit(threads);
+            std::vector<double> ph[6];
+            build_lbvh(in.boxes, in.centroids, p);  // warm-up
+            for (int r = 0; r < o.repeats; ++r) {
+                lbvh_report rep;
+                const ch04::bvh t = build_lbvh(in.boxes, in.centroids, p, &rep);
+                const double v[6] = {rep.codes_ms, rep.sort_ms, rep.hierarchy_ms, rep.boxes_ms, rep.collapse_ms, t.stats.build_ms};
+                for (int k = 0; k < 6; ++k) ph[k].push_back(v[k]);
+            }
+            double m[6];
+            for (int k = 0; k < 6; ++k) m[k] = median(ph[k]);
+            if (threads == 1) build_ms_one_thread.push_back(m[5]);
+            std::printf("  %-9s %7d %8.2f %8.2f %9.2f %8.2f %8.2f %8.2f\n", to_string(p).c_str(), threads, m[0], m[1],
+                        m[2], m[3], m[4], m[5]);
+            csv << name << ',' << in.boxes.size() << ',' << to_string(p) << ',' << threads;
+            for (const double x : m) csv << ',' << x;
+            csv << '\n';
+        }
+}
+
+// Quality: SAH cost and trace speed (one thread) of every LBVH and of chapter 05's binned SAH tree.
+void compare_quality(const std::string& name, const scene& s, const inputs& in, const options& o,
+                     const std::vector<double>& build_ms, std::ostringstream& csv) {
+    ch05::sah_build_params binned;
+    binned.bins = 16;
+    const auto reference = ch05::make_accel(false, binned, ch05::walk_kind::fast);
+    reference->build(s);
+    const ch01::checked_rays rays = ch01::make_checked_rays(s, o.width, o.height, *reference);
+    std::printf("  %-14s %5s %10s %9s %8s %6s %9s %9s %9s %6s\n", "tree", "bits", "dup codes", "build ms", "SAH",
+                "depth", "nodes", "primary", "diffuse", "differ");
+    const auto row = [&](const ch04::bvh_accel_base& a, const std::string& tree, int bits, std::size_t dups, double ms) {
+        const ch04::bvh& t = a.tree();
+        const double sah = ch05::tree_cost(t);
+        const ch01::checked_speed speed = ch01::time_checked(a, rays, o.repeats);
+        std::printf("  %-14s %5d %10zu %9.2f %8.2f %6d %9zu %9.2f %9.2f %6zu\n", tree.c_str(), bits, dups, ms, sah,
+                    t.stats.depth, t.nodes.size(), speed.primary_mrays, speed.diffuse_mrays, speed.differing);
+        std::fflush(stdout);
+        csv << name << ',' << in.boxes.size() << ',' << tree << ',' << bits << ',' << dups << ',' << ms << ',' << sah << ','
+            << t.stats.depth << ',' << t.nodes.size() << ',' << speed.primary_mrays << ',' << speed.diffuse_mrays << ','
+            << speed.differing << '\n';
+    };
+    const thread_limit one(1);
+    const double ch05_ms = median_ms(o.repeats, [&] { ch05::build_sah_bvh_fast(in.boxes, in.centroids, binned); });
+    row(*reference, "ch05-binned16", 0, 0, ch05_ms);
+    const std::vector<lbvh_params> list = variants();
+    for (std::size_t k = 0; k < list.size(); ++k) {
+        lbvh_report rep;
+        build_lbvh(in.boxes, in.centroids, list[k], &rep);
+        const auto a = make_accel(list[k]);
+        a->build(s);
+        row(*a, to_string(list[k]), 3 * list[k].bits_per_axis, rep.duplicate_codes, build_ms[k]);
+    }
+}
+
+// The sorts on the scene's own (key, id) pairs: the median time of o.repeats sorts of fresh copies.
+void compare_sorts(const std::string& name, const inputs& in, const options& o, std::ostringstream& csv) {
+    std::printf("  %-22s %7s %9s %9s   (ms, median of %d)\n", "sort", "threads", "30 bits", "63 bits", o.repeats);
+    struct pair_key {
+        std::uint64_t key;
+        std::uint32_t id;
+        bool operator<(const pair_key& b) const { return key < b.key || (key == b.key && id < b.id); }
+    };
+    const morton_codes codes[2] = {compute_morton_codes(in.boxes, in.centroids, 10),
+                                   compute_morton_codes(in.boxes, in.centroids, 21)};
+    const auto run = [&](const std::string& method, int threads, auto&& sort_keys, auto&& sort_pairs) {
+        const thread_limit limit(threads);
+        double ms[2];
+        for (int b = 0; b < 2; ++b) {
+            const morton_codes& c = codes[b];
+            std::vector<std::uint64_t> want = c.keys;
+            std::sort(want.begin(), want.end());
+            std::vector<double> times;
+            for (int r = 0; r <= o.repeats; ++r) {  // the first run untimed (warm-up)
+                std::vector<std::uint64_t> keys = c.keys;
+                std::vector<std::uint32_t> ids = c.ids;
+                std::vector<pair_key> pairs(keys.size());
+                for (std::size_t i = 0; i < keys.size(); ++i) pairs[i] = {keys[i], ids[i]};
+                const timer t;
+                if (sort_pairs) {
+                    sort_pairs(pairs);
+                    for (std::size_t i = 0; i < keys.size(); ++i) keys[i] = pairs[i].key;
+                } else {
+                    sort_keys(keys, ids, b == 0 ? 30 : 63);
+                }
+                if (r > 0) times.push_back(t.milliseconds());
+                if (keys != want) throw std::logic_error(method + " did not sort the keys");
+            }
+            ms[b] = median(times);
+        }
+        std::printf("  %-22s %7d %9.2f %9.2f\n", method.c_str(), threads, ms[0], ms[1]);
+        csv << name << ',' << in.boxes.size() << ',' << method << ',' << threads << ',' << ms[0] << ',' << ms[1] << '\n';
+    };
+    using pairs_fn = std::function<void(std::vector<pair_key>&)>;
+    const auto radix = [](int digit, bool parallel) {
+        return [digit, parallel](std::vector<std::uint64_t>& k, std::vector<std::uint32_t>& i, int bits) {
+            radix_sort_params p;
+            p.key_bits = bits, p.digit_bits = digit;
+            parallel ? radix_sort_parallel(k, i, p) : radix_sort_serial(k, i, p);
+        };
+    };
+    run("radix serial 8-bit", 1, radix(8, false), pairs_fn());
+    run("radix serial 11-bit", 1, radix(11, false), pairs_fn());
+    for (const int threads : thread_counts(o)) run("radix parallel 8-bit", threads, radix(8, true), pairs_fn());
+    const auto none = [](std::vector<std::uint64_t>&, std::vector<std::uint32_t>&, int) {};
+    run("std::sort", 1, none, pairs_fn([](std::vector<pair_key>& v) { std::sort(v.begin(), v.end()); }));
+    for (const int threads : thread_counts(o))
+        run("tbb::parallel_sort", threads, none, pairs_fn([](std::vector<pair_key>& v) { tbb::parallel_sort(v.begin(), v.end()); }));
+}
+
+void write_file(const fs::path& path, const std::string& header, const std::ostringstream& rows) {
+    std::ofstream f(path);
+    f << header << '\n' << rows.str();
+    f.close();
+    if (!f) throw std::runtime_error("cannot write " + path.string());
+}
+
+int run(int argc, const char* const* argv) {
+    cli args("ch07", "Chapter 07, linear BVHs (" + std::string(track_name()) + "): Morton codes, radix sort, the "
+             "hierarchy read off the codes' bits (the lecture's form and Karras's), boxes bottom up, SAH collapse. "
+             "Build phases at 1 and N threads, SAH cost and Mrays/s against chapter 05's binned SAH tree, and the "
+             "radix sort against std::sort and tbb::parallel_sort, as tables and CSV files.");
+    args.option("scene", "NAME", "all", "stadium, soup, bunny, sponza, teapot or all (all: stadium, soup, bunny, sponza)")
+        .option("threads", "N", "2", "the second thread count builds and sorts are timed at, 0..1024 (0: one per core)")
+        .option("width", "N", "", "primary rays per row, 1..4096 (default 192, 48 with --quick)")
+        .option("height", "N", "", "rows, 1..4096 (default 3/4 of the width)")
+        .option("repeats", "K", "", "timed runs per measurement after a warm-up; the median is reported (default 5, "
+                "1 with --quick)")
+        .option("out", "DIR", "", "write the CSV files into DIR/ (default out/07_lbvh/)")
+        .flag("force", "replace existing files in a folder named with --out")
+        .flag("quick", "the teapot and a soup of 20,000 triangles, 48 x 36 rays, one repeat");
+    if (!args.parse(argc, argv)) return 0;
+    const bool quick = args.has("quick");
+    options o;
+    bool user_named = false;
+    if (args.has("out")) o.folder = args.get("out"), user_named = true;
+    const image_size size = read_image_size(args, quick ? 48 : 192, 4096, 200);
+    o.width = size.width, o.height = size.height;
+    o.repeats = args.has("repeats") ? args.get_int("repeats") : quick ? 1 : 5;
+    if (o.repeats < 1 || o.repeats > 100) throw usage_error("--repeats must lie in [1, 100]");
+    o.threads = read_threads(args, 0);
+    if (o.threads == 0) o.threads = int(std::max(1u, std::thread::hardware_concurrency()));
+    const std::string which = quick ? "quick" : args.get("scene");
+    if (which != "quick" && which != "all" && which != "teapot" && which != "stadium" && which != "soup" &&
+        which != "bunny" && which != "sponza")
+        throw usage_error("--scene must be stadium, soup, bunny, sponza, teapot or all, not '" + which + "'");
+    const fs::path phases_csv = o.folder / "build_phases.csv", quality_csv = o.folder / "quality.csv",
+                   sort_csv = o.folder / "sort.csv";
+    for (const fs::path& p : {phases_csv, quality_csv, sort_csv}) prepare_output(p, user_named, args.has("force"));
+
+    std::vector<scene> scenes;
+    if (which == "teapot" || which == "quick") scenes.push_back(builtin_scene("teapot"));
+    if (which == "all" || which == "stadium") scenes.push_back(builtin_scene("teapot_stadium"));
+    if (which == "all" || which == "soup" || which == "quick")
+        scenes.push_back(mesh_scene("soup", random_soup(quick ? 20000 : 200000, 1)));
+    for (const auto& [name, file] : {std::pair{"bunny", "bunny.ply"}, std::pair{"sponza", "sponza.obj"}}) {
+        if (which != "all" && which != name) continue;
+        if (auto s = load_shared_mesh(file, name)) scenes.push_back(std::move(*s));
+    }
+    std::ostringstream phases, quality, sorts;
+    for (const scene& s : scenes) {
+        const inputs in(s);
+        std::printf("%s: %zu triangles; builds and sorts at 1 and %d threads, tracing on one thread (%d x %d primary "
+                    "rays and as many diffuse)\n", s.name.c_str(), in.boxes.size(), o.threads, o.width, o.height);
+        std::vector<double> build_ms;
+        time_phases(s.name, in, o, phases, build_ms);
+        compare_quality(s.name, s, in, o, build_ms, quality);
+        compare_sorts(s.name, in, o, sorts);
+    }
+    write_file(phases_csv, "scene,triangles,builder,threads,codes_ms,sort_ms,hierarchy_ms,boxes_ms,collapse_ms,total_ms",
+               phases);
+    write_file(quality_csv, "scene,triangles,tree,bits,duplicate_codes,build_ms,sah_cost,depth,nodes,primary_mrays_s,"
+               "diffuse_mrays_s,differing", quality);
+    write_file(sort_csv, "scene,keys,method,threads,ms_30bit,ms_63bit", sorts);
+    std::printf("wrote %s, %s, %s\n", phases_csv.string().c_str(), quality_csv.string().c_str(), sort_csv.string().c_str());
+    return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    const bool exercises = std::string(track_name()) == "exercises";
+    return guarded_main(exercises ? "ch07_exercise" : "ch07", run, argc, argv);
+}
