@@ -32,26 +32,7 @@ struct options {
     fs::path folder{"out/07_lbvh"};
 };
 
-// What every builder sees: one box and one centroid per triangle (as chapter 04's accel hands them over).
-struct inputs {
-    std::vector<aabb> boxes;
-    std::vector<vec3> centroids;
-    explicit inputs(const scene& s) {
-        const ch01::triangle_set tris(s.mesh);
-        for (std::uint32_t i = 0; i < tris.size(); ++i) boxes.push_back(tris.bounds(i)), centroids.push_back(boxes.back().centroid());
-    }
-};
-
-std::vector<lbvh_params> variants() {
-    std::vector<lbvh_params> list;
-    for (const hierarchy_method h : {hierarchy_method::lecture, hierarchy_method::karras})
-        for (const int bits : {10, 21}) {
-            lbvh_params p;
-            p.hierarchy = h, p.bits_per_axis = bits;
-            list.push_back(p);
-        }
-    return list;
-}
+using inputs = builder_inputs;
 
 // The thread counts the builds and sorts are timed at: 1 and o.threads.
 std::vector<int> thread_counts(const options& o) { return o.threads == 1 ? std::vector<int>{1} : std::vector<int>{1, o.threads}; }
@@ -61,7 +42,7 @@ void time_phases(const std::string& name, const inputs& in, const options& o, st
                  std::vector<double>& build_ms_one_thread) {
     std::printf("  %-9s %7s %8s %8s %9s %8s %8s %8s   (ms, median of %d)\n", "builder", "threads", "codes", "sort",
                 "hierarchy", "boxes", "collapse", "total", o.repeats);
-    for (const lbvh_params& p : variants())
+    for (const lbvh_params& p : lbvh_variants())
         for (const int threads : thread_counts(o)) {
             const thread_limit limit(threads);
             std::vector<double> ph[6];
@@ -107,7 +88,7 @@ void compare_quality(const std::string& name, const scene& s, const inputs& in, 
     const thread_limit one(1);
     const double ch05_ms = median_ms(o.repeats, [&] { ch05::build_sah_bvh_fast(in.boxes, in.centroids, binned); });
     row(*reference, "ch05-binned16", 0, 0, ch05_ms);
-    const std::vector<lbvh_params> list = variants();
+    const std::vector<lbvh_params> list = lbvh_variants();
     for (std::size_t k = 0; k < list.size(); ++k) {
         lbvh_report rep;
         build_lbvh(in.boxes, in.centroids, list[k], &rep);
@@ -223,7 +204,7 @@ int run(int argc, const char* const* argv) {
     }
     std::ostringstream phases, quality, sorts;
     for (const scene& s : scenes) {
-        const inputs in(s);
+        const inputs in(s.mesh);
         std::printf("%s: %zu triangles; builds and sorts at 1 and %d threads, tracing on one thread (%d x %d primary "
                     "rays and as many diffuse)\n", s.name.c_str(), in.boxes.size(), o.threads, o.width, o.height);
         std::vector<double> build_ms;

@@ -27,25 +27,7 @@ using test::mesh_only;
 
 namespace {
 
-struct inputs {
-    std::vector<aabb> boxes;
-    std::vector<vec3> centroids;
-    explicit inputs(const triangle_mesh& m) {
-        const ch01::triangle_set tris(m);
-        for (std::uint32_t i = 0; i < tris.size(); ++i) boxes.push_back(tris.bounds(i)), centroids.push_back(boxes.back().centroid());
-    }
-};
-
-std::vector<lbvh_params> all_params() {
-    std::vector<lbvh_params> list;
-    for (const hierarchy_method h : {hierarchy_method::lecture, hierarchy_method::karras})
-        for (const int bits : {10, 21}) {
-            lbvh_params p;
-            p.hierarchy = h, p.bits_per_axis = bits;
-            list.push_back(p);
-        }
-    return list;
-}
+using inputs = builder_inputs;
 
 // A radix tree over n leaves: the root covers [0, n-1]; each inner node's children cover [first, g] and
 // [g+1, last] for some g, numbered g and g+1; parents match; every leaf is reached once. Returns the depth.
@@ -200,7 +182,7 @@ TEST_CASE("ch07 LBVH: every builder's tree is valid on scenes and degenerate inp
     meshes.emplace_back("non-finite vertices", odd);
     for (const auto& [name, mesh] : meshes) {
         const inputs in(mesh);
-        for (const lbvh_params& p : all_params()) {
+        for (const lbvh_params& p : lbvh_variants()) {
             INFO(name << ", " << to_string(p));
             lbvh_report r;
             const ch04::bvh t = build_lbvh(in.boxes, in.centroids, p, &r);
@@ -230,7 +212,7 @@ TEST_CASE("ch07 LBVH: deep codes stay within the depth bound, rebuilt by halving
                 m.indices.push_back(uvec3(b, b + 1, b + 2));
             }
     const inputs in(m);
-    for (lbvh_params p : all_params()) {
+    for (lbvh_params p : lbvh_variants()) {
         INFO(to_string(p));
         lbvh_report r;
         const ch04::bvh natural = build_lbvh(in.boxes, in.centroids, p, &r);
@@ -249,7 +231,7 @@ TEST_CASE("ch07 LBVH: deep codes stay within the depth bound, rebuilt by halving
 
 TEST_CASE("ch07 LBVH: the SAH collapse lowers the cost, and the tree is the same on 1 and 2 threads", "[ch07]") {
     const inputs in(teapot_scene(4).mesh);
-    for (const lbvh_params& p : all_params()) {
+    for (const lbvh_params& p : lbvh_variants()) {
         INFO(to_string(p));
         lbvh_params single = p;
         single.max_leaf = 1;
@@ -288,7 +270,7 @@ TEST_CASE("ch07 LBVH: chapter 05's fast walk over every LBVH equals brute force"
     for (vec3& p : flat.positions) p.z = 0.5f;
     meshes.push_back(flat);
     for (const triangle_mesh& m : meshes)
-        for (const lbvh_params& p : all_params()) {
+        for (const lbvh_params& p : lbvh_variants()) {
             const auto a = make_accel(p);
             a->build(mesh_only(m));
             INFO(a->name() << " on " << m.triangle_count() << " triangles");

@@ -4,6 +4,7 @@
 //   section 4 (the bottom-up pass with an atomic counter per node);
 //   the collapse as in pbrt-v4's SAH termination rule and chapter 05 (C_I * N against the split's cost).
 #include "strahl/ch07/lbvh.hpp"
+#include "strahl/ch01/primitive_sets.hpp"
 #include "strahl/ch07/morton.hpp"
 #include "strahl/ch07/radix_sort.hpp"
 #include "strahl/parallel.hpp"
@@ -126,6 +127,23 @@ struct collapser {
 
 std::string to_string(const lbvh_params& p) {
     return std::string(p.hierarchy == hierarchy_method::karras ? "karras" : "lbvh") + std::to_string(3 * p.bits_per_axis);
+}
+
+std::vector<lbvh_params> lbvh_variants() {
+    std::vector<lbvh_params> list;
+    for (const hierarchy_method h : {hierarchy_method::lecture, hierarchy_method::karras})
+        for (const int bits : {10, 21}) {
+            lbvh_params p;
+            p.hierarchy = h, p.bits_per_axis = bits;
+            list.push_back(p);
+        }
+    return list;
+}
+
+builder_inputs::builder_inputs(const triangle_mesh& mesh) {
+    const ch01::triangle_set tris(mesh);
+    boxes.reserve(tris.size()), centroids.reserve(tris.size());
+    for (std::uint32_t i = 0; i < tris.size(); ++i) boxes.push_back(tris.bounds(i)), centroids.push_back(boxes.back().centroid());
 }
 
 std::vector<aabb> fit_boxes(const radix_tree& t, std::span<const aabb> leaf_boxes) {

@@ -11,8 +11,10 @@
 #include "strahl/ch04/bvh.hpp"
 #include "strahl/ch05/sah.hpp"
 #include "strahl/ch07/radix_tree.hpp"
+#include "strahl/scene.hpp"
 #include <span>
 #include <string>
+#include <vector>
 
 namespace strahl::ch07 {
 
@@ -39,6 +41,16 @@ struct lbvh_params {
     int max_depth = ch04::bvh_max_depth;
 };
 std::string to_string(const lbvh_params& p);  // "lbvh30", "karras63", ...
+// The four builders the chapter compares: both hierarchy forms with 30- and 63-bit codes, default otherwise.
+std::vector<lbvh_params> lbvh_variants();
+
+// What every builder sees: one box and one centroid per triangle of the mesh (as chapter 04's accel hands
+// them over).
+struct builder_inputs {
+    std::vector<aabb> boxes;
+    std::vector<vec3> centroids;
+    explicit builder_inputs(const triangle_mesh& mesh);
+};
 
 // Milliseconds per phase, and what the codes did, for the chapter's program.
 struct lbvh_report {
