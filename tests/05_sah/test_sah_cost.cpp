@@ -1,11 +1,11 @@
-// Exercise 05.1 the SAH cost of a split (6 points). Only split_cost, on hand-computed numbers.
+// Exercise 05.1 the SAH cost of a split (2 points). Only split_cost, on hand-computed numbers.
 #include "strahl/ch05/sah.hpp"
 #include <catch2/catch.hpp>
 
 using namespace strahl;
 using namespace strahl::ch05;
 
-TEST_CASE("05.1 SAH cost: the lecture's equation on hand-computed splits", "[ch05][pts:4]") {
+TEST_CASE("05.1 SAH cost: the lecture's equation on hand-computed splits", "[ch05][pts:1]") {
     const sah_costs unit{1.0f, 1.0f};
     // P = [0,2]x[0,1]x[0,1] (area 10) into two unit cubes (area 6 each), 1 and 2 primitives:
     // 1 + (6/10 * 1 + 6/10 * 2) = 2.8.
@@ -18,7 +18,7 @@ TEST_CASE("05.1 SAH cost: the lecture's equation on hand-computed splits", "[ch0
     CHECK(split_cost(unit, 1000.0f, 250.0f, 8, 500.0f, 4) == Approx(split_cost(unit, 4.0f, 1.0f, 8, 2.0f, 4)));
 }
 
-TEST_CASE("05.1 SAH cost: traversal cost alone for empty children, linear in the counts", "[ch05][pts:2]") {
+TEST_CASE("05.1 SAH cost: traversal cost alone for empty children, linear in the counts", "[ch05][pts:1]") {
     CHECK(split_cost({1.5f, 1.0f}, 6.0f, 3.0f, 0, 3.0f, 0) == Approx(1.5f));
     const float one = split_cost({1.0f, 2.0f}, 6.0f, 3.0f, 10, 1.5f, 0);
     const float two = split_cost({1.0f, 2.0f}, 6.0f, 3.0f, 20, 1.5f, 0);

@@ -19,7 +19,8 @@ namespace strahl::ch04 {
 //                (left) child of an inner node is always the next node: index + 1 (depth-first order);
 //   bytes 28-29: count: the leaf's number of primitives (1 or more); 0 marks an inner node;
 //   byte  30:    axis: the inner node's split axis (0, 1, 2), which the traversal's near-first order reads;
-//   byte  31:    padding. Two nodes fill one 64-byte cache line.
+//   byte  31:    padding. 32 bytes: a node never straddles two 64-byte cache lines where the array
+//                starts on one (siblings need not share a line: the right child lies after the left subtree).
 struct bvh_node {
     float bmin[3];
     float bmax[3];

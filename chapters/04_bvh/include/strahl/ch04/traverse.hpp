@@ -6,6 +6,7 @@
 #pragma once
 #include "strahl/tree_query.hpp"
 #include "strahl/ch04/bvh.hpp"
+#include "strahl/function_ref.hpp"
 #include "strahl/ray.hpp"
 #include <limits>
 
@@ -27,14 +28,16 @@ constexpr float gamma(int n) {
 // (the ray runs in the plane: inside the closed slab for every t). Boxes are closed: touching a face counts.
 bool slab_test(const aabb& box, const vec3& org, const vec3& inv_dir, float tmin, float tmax);
 
-// Exercise 04.3 "near child first": the two children of the inner node `node` at index `index`, in the
-// order the ray with direction dir visits them: the left child (index + 1) first when the direction's
-// component on the node's axis has its sign bit clear (+0 included), the right child (node.offset) first
-// when it is set (-0 included). The far child waits on the stack.
-struct child_order {
-    std::uint32_t near, far;
-};
-child_order ordered_children(std::uint32_t index, const bvh_node& node, const vec3& dir);
+// Exercise 04.3 "near-first traversal": walks the flat tree from the root with a stack, and returns the
+// number of nodes visited (each one box test). At each node, box_hit(node) says whether the ray still meets
+// its box; if not, the node is skipped. A leaf is handed to leaf(offset, count), its range of prim_ids; a
+// true answer ends the walk at once (any hit). An inner node's children are taken near child first: the
+// left one (index + 1) first when dir's component on the node's axis has its sign bit clear (+0
+// included), the right one (offset) first when it is set (-0 included); the far child waits on the stack.
+// An empty tree visits nothing. The box test and the leaf test are the caller's: traversal only orders.
+using box_hit_test = function_ref<bool(const bvh_node& node)>;
+using leaf_visit = function_ref<bool(std::uint32_t first, std::uint32_t count)>;
+std::uint32_t near_first_traversal(const bvh& tree, const vec3& dir, box_hit_test box_hit, leaf_visit leaf);
 
 // Boxes are tested against [tmin - slack, tmax + slack], with ray_slack (strahl/tree_query.hpp): a
 // triangle test's t carries its own rounding error, which the box's t need not share. And each box is
@@ -42,36 +45,21 @@ child_order ordered_children(std::uint32_t index, const bvh_node& node, const ve
 
 // Visits the leaves whose boxes the ray meets, near child first. leaf(first, count) tests prim_ids
 // [first, first + count) and returns true to stop (any hit). A closest-hit leaf test shrinks r.tmax to
-// just above the best t (record_closest), so later boxes entered beyond it are skipped, while a box whose
-// entry equals the best t is still visited: a tie there may hold a lower id.
+// just above the best t (record_closest), so later boxes entered beyond it are skipped (the box test reads
+// r.tmax as it is when the node comes up), while a box whose entry equals the best t is still visited: a
+// tie there may hold a lower id.
 template <class Stats, class LeafTest>
 void traverse(const bvh& tree, ray& r, Stats& stats, LeafTest&& leaf) {
     if (tree.nodes.empty()) return;
     const vec3 inv_dir = 1.0f / r.dir;
     const float slack = ray_slack(r, tree.bounds), grow = space_slack(r, tree.bounds);
-    std::uint32_t stack[bvh_max_depth + 2];
-    int top = 0;
-    std::uint32_t index = 0;
-    for (;;) {
-        const bvh_node& n = tree.nodes[index];
-        stats.node_visit();
-        stats.box_test();
-        // Step 1, the box: skip the node unless the (widened) segment meets the (grown) box.
-        if (slab_test(grown(n.box(), grow), r.org, inv_dir, r.tmin - slack, r.tmax + slack)) {
-            if (n.is_leaf()) {
-                // Step 2, the leaf: its primitives, through the set's test.
-                if (leaf(n.offset, std::uint32_t(n.count))) return;
-            } else {
-                // Step 3, near child first: descend into it, the far child onto the stack.
-                const child_order c = ordered_children(index, n, r.dir);
-                stack[top++] = c.far;
-                index = c.near;
-                continue;
-            }
-        }
-        if (top == 0) return;
-        index = stack[--top];
-    }
+    // The box: the (widened) segment against the (grown) box, with r.tmax as the leaves have left it.
+    const auto box_hit = [&](const bvh_node& n) {
+        return slab_test(grown(n.box(), grow), r.org, inv_dir, r.tmin - slack, r.tmax + slack);
+    };
+    const std::uint32_t visited = near_first_traversal(tree, r.dir, box_hit, leaf);
+    stats.node_visit(visited);
+    stats.box_test(visited);
 }
 
 }  // namespace strahl::ch04
