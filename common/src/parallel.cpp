@@ -4,6 +4,8 @@
 #include <tbb/blocked_range.h>
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
+#include <tbb/task_arena.h>
 
 namespace strahl {
 
@@ -23,6 +25,13 @@ void parallel_for_tiles(int width, int height, int tile_size, const std::functio
 void parallel_for_chunks(std::size_t n, std::size_t grain, const std::function<void(std::size_t, std::size_t)>& f) {
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, std::max<std::size_t>(1, grain)),
                       [&](const tbb::blocked_range<std::size_t>& r) { f(r.begin(), r.end()); });
+}
+
+void parallel_invoke(const std::function<void()>& a, const std::function<void()>& b) { tbb::parallel_invoke(a, b); }
+
+int parallel_threads() {
+    const auto limit = tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism);
+    return int(std::max<std::size_t>(1, std::min<std::size_t>(limit, std::size_t(tbb::this_task_arena::max_concurrency()))));
 }
 
 struct thread_limit::control {

@@ -12,7 +12,13 @@
 //     unions of their bins.
 // The float operations are the solutions' own, in the same order (and -ffp-contract=off), so every cost
 // compares the same way and the test checks the two trees node for node.
+// In parallel (where more than one thread is allowed): a node of at least task_min primitives builds its
+// left subtree itself and its right one as a task, into a node array of its own appended afterwards; the
+// nodes of at least bin_parallel_min primitives bin in chunks on all threads. Each node's decisions depend
+// on its primitives alone, and the bins merge by min, max and sums, so the tree is the same on any number
+// of threads, node for node (a test checks it).
 #include "strahl/ch05/sah.hpp"
+#include "strahl/parallel.hpp"
 #include "strahl/timer.hpp"
 #include <algorithm>
 #include <bit>
@@ -105,11 +111,19 @@ void sweep(int axis, int count, BoxAt box_at, CountAt count_at, const sah_costs&
     }
 }
 
+// The bins of one axis set: k boxes and counts per axis.
+struct bin_set {
+    box bins[3][256];
+    std::uint32_t counts[3][256];
+};
+
 struct fast_builder {
     sah_build_params params;
     std::vector<ref>& refs;
     std::vector<ch04::bvh_node>& nodes;
     ch04::bvh_stats& stats;
+    std::size_t task_min = 0;          // 0: serial; else a node this large on both sides forks its children
+    std::size_t bin_parallel_min = 0;  // 0: serial; else a node this large bins in parallel chunks
     box bins[3][256];
     std::uint32_t counts[3][256];
     float right_area[256];
@@ -194,7 +208,9 @@ struct fast_builder {
         return best;
     }
 
-    split_choice best_binned(std::size_t begin, std::size_t end, const mapping& m, float area) {
+    // Bins refs [begin, end) into bins and counts (emptied first).
+    void bin_range(std::size_t begin, std::size_t end, const mapping& m, box (&bins)[3][256],
+                   std::uint32_t (&counts)[3][256]) const {
         const int k = m.k;
         for (int a = 0; a < 3; ++a) std::fill_n(bins[a], k, box{}), std::fill_n(counts[a], k, 0u);
         for (std::size_t i = begin; i < end; ++i) {
@@ -203,6 +219,26 @@ struct fast_builder {
             bins[0][b[0]].grow(r.lo, r.hi), ++counts[0][b[0]];
             bins[1][b[1]].grow(r.lo, r.hi), ++counts[1][b[1]];
             bins[2][b[2]].grow(r.lo, r.hi), ++counts[2][b[2]];
+        }
+    }
+
+    split_choice best_binned(std::size_t begin, std::size_t end, const mapping& m, float area) {
+        const int k = m.k;
+        if (bin_parallel_min && end - begin >= bin_parallel_min) {
+            // In parallel: a bin set per chunk, merged in chunk order (min, max, sums: the same bins).
+            const std::size_t chunk = std::max<std::size_t>(16384, (end - begin) / 64);
+            const std::size_t chunks = (end - begin + chunk - 1) / chunk;
+            std::vector<bin_set> part(chunks);
+            parallel_for_chunks(chunks, 1, [&](std::size_t c0, std::size_t c1) {
+                for (std::size_t c = c0; c < c1; ++c)
+                    bin_range(begin + c * chunk, std::min(end, begin + (c + 1) * chunk), m, part[c].bins, part[c].counts);
+            });
+            for (int a = 0; a < 3; ++a) std::fill_n(bins[a], k, box{}), std::fill_n(counts[a], k, 0u);
+            for (const bin_set& p : part)
+                for (int a = 0; a < 3; ++a)
+                    for (int b = 0; b < k; ++b) bins[a][b].grow(p.bins[a][b]), counts[a][b] += p.counts[a][b];
+        } else {
+            bin_range(begin, end, m, bins, counts);
         }
         split_choice best;
         for (int a = 0; a < 3; ++a)
@@ -300,6 +336,26 @@ struct fast_builder {
         // STEP 5: left child next, right child's index into offset.
         ++stats.inner;
         nodes[index].axis = std::uint8_t(axis);
+        if (task_min && mid - begin >= task_min && end - mid >= task_min) {
+            // In parallel: the left subtree here, the right one by a builder of its own (its own scratch and
+            // node array), appended after the left subtree; its inner nodes' offsets move by where it lands.
+            std::vector<ch04::bvh_node> right_nodes;
+            right_nodes.reserve(2 * (end - mid) - 1);
+            ch04::bvh_stats right_stats;
+            auto other = std::make_unique<fast_builder>(params, refs, right_nodes, right_stats, task_min, bin_parallel_min);
+            parallel_invoke([&] { build(begin, mid, depth + 1, left); },
+                            [&] { other->build(mid, end, depth + 1, right); });
+            const auto base = std::uint32_t(nodes.size());
+            for (ch04::bvh_node n : right_nodes) {
+                if (!n.is_leaf()) n.offset += base;
+                nodes.push_back(n);
+            }
+            nodes[index].offset = base;
+            stats.depth = std::max(stats.depth, right_stats.depth);
+            stats.inner += right_stats.inner, stats.leaves += right_stats.leaves;
+            stats.max_leaf = std::max(stats.max_leaf, right_stats.max_leaf);
+            return index;
+        }
         build(begin, mid, depth + 1, left);
         const std::uint32_t right_index = build(mid, end, depth + 1, right);
         nodes[index].offset = right_index;
@@ -337,6 +393,11 @@ ch04::bvh build_sah_bvh_fast(std::span<const aabb> boxes, std::span<const vec3> 
         const std::size_t n = refs.size();
         t.nodes.reserve(2 * n - 1);
         auto b = std::make_unique<fast_builder>(p, refs, t.nodes, t.stats);  // ~60 KiB of scratch: on the heap
+        if (parallel_threads() > 1) {
+            // Enough tasks for the threads to share, few enough that appending the right subtrees stays cheap.
+            b->task_min = std::max<std::size_t>(4096, n / 64);
+            b->bin_parallel_min = 65536;
+        }
         b->build(0, n, 0, root);
         t.bounds = t.nodes[0].box();
         t.prim_ids.resize(n);

@@ -22,6 +22,12 @@ void parallel_for_tiles(int width, int height, int tile_size, const std::functio
 // Calls f(begin, end) on chunks of [0, n) in parallel.
 void parallel_for_chunks(std::size_t n, std::size_t grain, const std::function<void(std::size_t, std::size_t)>& f);
 
+// Runs a() and b(), in parallel where a thread is free (fork-join: returns when both have).
+void parallel_invoke(const std::function<void()>& a, const std::function<void()>& b);
+
+// The threads the loops above may use now: one per core, or fewer under a thread_limit.
+int parallel_threads();
+
 // Limits TBB to n threads while alive (n <= 0: no limit, TBB's default of one per core).
 class thread_limit {
 public:
