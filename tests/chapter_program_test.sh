@@ -44,7 +44,8 @@ case $nn in
     sized=() ;;
 06) args=(--quick --width 48 --repeats 1 --out "$out") files=(refinement.csv sah_vs_time_stadium.svg)
     sized=() ;;
-07) args=(--quick --width 32 --out "$out") files=(build_phases.csv quality.csv sort.csv)
+07) args=(--quick --width 32 --out "$out") files=(build_phases.csv quality.csv sort.csv scaling.csv phases.svg
+                                                     build_vs_trace.svg sort.svg)
     sized=() ;;
 11) args=(--quick --width 32 --out "$out") files=(steps.csv render.csv staircase.svg render.png)
     sized=(render.png:"32 32") ;;
@@ -248,6 +249,47 @@ if [[ $nn == 15 ]]; then
     contains "$dir/ratios/race_ratios.csv" "s.ply,shadow,ch15-watertight-fast,ch15-mt-fast,1,2,2,2" "--from-race"
     runs "--from-race of a folder without processes" 1 "$program" --from-race "$dir/ratios" --out "$dir/ratios2"
     contains "$dir/err" "no race.csv" "--from-race of a folder without processes"
+fi
+
+# Chapter 07 redraws its three plots from a folder of its CSV files (--replot DIR), the same SVG bytes as
+# the run wrote; a folder without them is refused before anything is created.
+if [[ $nn == 07 ]]; then
+    runs "--replot" 0 "$program" --replot "$out" --out "$dir/replot"
+    for f in phases.svg build_vs_trace.svg sort.svg; do
+        cmp -s "$out/$f" "$dir/replot/$f" || fail "--replot: $f differs from the run's"
+    done
+    mkdir -p "$dir/empty"
+    runs "--replot of a folder without the CSVs" 2 "$program" --replot "$dir/empty" --out "$dir/replot7"
+    contains "$dir/err" "--replot: no" "--replot of a folder without the CSVs"
+    [[ ! -e $dir/replot7 ]] || fail "--replot of a folder without the CSVs made its output folder"
+fi
+
+# Chapters 03 to 06 draw their figures (--diagrams DIR): whole SVG files in a folder made for them, not
+# replaced without --force; the exercise track's program draws them too or names the unfinished exercise.
+case $nn in
+03) diagrams=(near_far.svg) ;;
+04) diagrams=(subdivision.svg flattened.svg slab_test.svg) ;;
+05) diagrams=(sweep_and_bins.svg) ;;
+06) diagrams=(rotation.svg) ;;
+*) diagrams=() ;;
+esac
+if [[ ${#diagrams[@]} -gt 0 ]]; then
+    runs "--help" 0 "$program" --help
+    contains "$dir/out" "--diagrams DIR" "--help lists --diagrams"
+    runs "--diagrams" 0 "$program" --diagrams "$dir/diagrams/figures"
+    for f in "${diagrams[@]}"; do
+        [[ -s $dir/diagrams/figures/$f ]] || { fail "--diagrams: $f missing or empty"; continue; }
+        head -c 5 "$dir/diagrams/figures/$f" | grep -q "<svg" && grep -q "</svg>" "$dir/diagrams/figures/$f" ||
+            fail "--diagrams: $f is not a whole SVG file"
+    done
+    runs "--diagrams again without --force" 1 "$program" --diagrams "$dir/diagrams/figures"
+    contains "$dir/err" "not overwriting" "--diagrams again without --force"
+    runs "--diagrams again with --force" 0 "$program" --diagrams "$dir/diagrams/figures" --force
+    if [[ $exercise != none ]]; then
+        rc=0
+        "$exercise" --diagrams "$dir/diagrams/exercise" >"$dir/out" 2>"$dir/err" || rc=$?
+        [[ $rc -eq 0 || $rc -eq 3 ]] || fail "exercise program --diagrams: exit $rc, expected 0 or 3"
+    fi
 fi
 
 # Nothing is overwritten unless asked: the same run again is refused and leaves the files as they were.

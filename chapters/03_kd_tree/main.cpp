@@ -12,6 +12,11 @@
 #include <cstdio>
 #include <iostream>
 
+namespace strahl::ch03 {
+// The chapter's figure (src/diagrams.cpp): an SVG file drawn by the chapter's own traversal step.
+std::vector<std::filesystem::path> write_diagrams(const std::filesystem::path& folder, bool force);
+}  // namespace strahl::ch03
+
 namespace {
 
 using namespace strahl;
@@ -97,8 +102,14 @@ int run(int argc, const char* const* argv) {
         .option("out", "DIR", "", "write the images into DIR/ (default out/03_kd_tree/)")
         .flag("force", "replace existing files in a folder named with --out")
         .flag("sponza", "with --scene all: also Sponza (262k triangles, a build of seconds)")
-        .flag("quick", "smaller images and only the built-in scenes");
+        .flag("quick", "smaller images and only the built-in scenes")
+        .option("diagrams", "DIR", "", "only draw the chapter's figure into DIR/ (near_far.svg; --force to replace it)");
     if (!args.parse(argc, argv)) return 0;
+    if (args.has("diagrams")) {
+        for (const fs::path& f : write_diagrams(args.get("diagrams"), args.has("force")))
+            std::printf("wrote %s\n", f.string().c_str());
+        return 0;
+    }
     const bool quick = args.has("quick");
     const int threads = read_threads(args, 0);
     const thread_limit limit(threads);

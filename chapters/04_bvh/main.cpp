@@ -17,6 +17,11 @@
 #include <cstdio>
 #include <fstream>
 
+namespace strahl::ch04 {
+// The chapter's figures (src/diagrams.cpp): SVG files drawn from the structures its code builds.
+std::vector<std::filesystem::path> write_diagrams(const std::filesystem::path& folder, bool force);
+}  // namespace strahl::ch04
+
 namespace {
 
 using namespace strahl;
@@ -159,8 +164,15 @@ int run(int argc, const char* const* argv) {
         .flag("force", "replace existing files in a folder named with --out")
         .flag("quick", "smaller images and only the built-in scenes")
         .flag("sweep", "measure instead how the grid, the k-d tree and the BVH scale with the triangle count "
-                       "(writes sweep.csv, sweep.svg)");
+                       "(writes sweep.csv, sweep.svg)")
+        .option("diagrams", "DIR", "", "only draw the chapter's figures into DIR/ (subdivision.svg, flattened.svg, "
+                                       "slab_test.svg; --force to replace them)");
     if (!args.parse(argc, argv)) return 0;
+    if (args.has("diagrams")) {
+        for (const fs::path& f : write_diagrams(args.get("diagrams"), args.has("force")))
+            std::printf("wrote %s\n", f.string().c_str());
+        return 0;
+    }
     const bool quick = args.has("quick");
     const int threads = read_threads(args, 0);
     const thread_limit limit(threads);

@@ -17,6 +17,11 @@
 #include <fstream>
 #include <sstream>
 
+namespace strahl::ch05 {
+// The chapter's figure (src/diagrams.cpp): an SVG file priced by the chapter's own functions.
+std::vector<std::filesystem::path> write_diagrams(const std::filesystem::path& folder, bool force);
+}  // namespace strahl::ch05
+
 namespace {
 
 using namespace strahl;
@@ -212,8 +217,15 @@ int run(int argc, const char* const* argv) {
         .option("out", "DIR", "", "write the CSV file, the plots and the heat maps into DIR/ (default out/05_sah/)")
         .option("replot", "CSV", "", "only redraw the two plots from a bins.csv written earlier (no building, no tracing)")
         .flag("force", "replace existing files in a folder named with --out")
-        .flag("quick", "the teapot in a stadium only, 96 x 72 rays, bins 4, 16, 64");
+        .flag("quick", "the teapot in a stadium only, 96 x 72 rays, bins 4, 16, 64")
+        .option("diagrams", "DIR", "", "only draw the chapter's figure into DIR/ (sweep_and_bins.svg; --force to "
+                                       "replace it)");
     if (!args.parse(argc, argv)) return 0;
+    if (args.has("diagrams")) {
+        for (const fs::path& f : write_diagrams(args.get("diagrams"), args.has("force")))
+            std::printf("wrote %s\n", f.string().c_str());
+        return 0;
+    }
     const bool quick = args.has("quick");
     options o;
     if (args.has("out")) o.folder = args.get("out"), o.user_named = true;

@@ -18,6 +18,11 @@
 #include <fstream>
 #include <sstream>
 
+namespace strahl::ch06 {
+// The chapter's figure (src/diagrams.cpp): an SVG file computed by the chapter's own rotation code.
+std::vector<std::filesystem::path> write_diagrams(const std::filesystem::path& folder, bool force);
+}  // namespace strahl::ch06
+
 namespace {
 
 using namespace strahl;
@@ -192,8 +197,14 @@ int run(int argc, const char* const* argv) {
         .option("out", "DIR", "", "write the CSV file and the plots into DIR/ (default out/06_refinement/)")
         .option("replot", "CSV", "", "only redraw the plots from a refinement.csv written earlier (no refining, no tracing)")
         .flag("force", "replace existing files in a folder named with --out")
-        .flag("quick", "the teapot in a stadium only, 96 x 72 rays, budgets 1,64 and 1,16,64");
+        .flag("quick", "the teapot in a stadium only, 96 x 72 rays, budgets 1,64 and 1,16,64")
+        .option("diagrams", "DIR", "", "only draw the chapter's figure into DIR/ (rotation.svg; --force to replace it)");
     if (!args.parse(argc, argv)) return 0;
+    if (args.has("diagrams")) {
+        for (const fs::path& f : write_diagrams(args.get("diagrams"), args.has("force")))
+            std::printf("wrote %s\n", f.string().c_str());
+        return 0;
+    }
     const bool quick = args.has("quick");
     options o;
     if (args.has("out")) o.folder = args.get("out"), o.user_named = true;

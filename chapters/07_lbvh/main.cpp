@@ -10,11 +10,13 @@
 #include "strahl/ch07/morton.hpp"
 #include "strahl/ch07/radix_sort.hpp"
 #include "strahl/parallel.hpp"
+#include "strahl/plot.hpp"
 #include "strahl/procedural.hpp"
 #include "strahl/program.hpp"
 #include "strahl/scene.hpp"
 #include "strahl/timer.hpp"
 #include <algorithm>
+#include <map>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -62,6 +64,32 @@ void time_phases(const std::string& name, const inputs& in, const options& o, st
             for (const double x : m) csv << ',' << x;
             csv << '\n';
         }
+}
+
+// Scaling: each builder's median build time at 1 and o.threads threads, and the speed-up: chapter 05's
+// binned SAH build (top down: the root alone on one thread, then subtrees as tasks) against the LBVH
+// (every phase a parallel pass).
+void time_scaling(const std::string& name, const inputs& in, const options& o, std::ostringstream& csv) {
+    std::printf("  %-14s %7s %9s %8s   (ms, median of %d)\n", "builder", "threads", "build", "speed-up", o.repeats);
+    ch05::sah_build_params binned;
+    binned.bins = 16;
+    lbvh_params lecture, karras;
+    karras.hierarchy = hierarchy_method::karras;
+    const std::pair<std::string, std::function<void()>> builders[] = {
+        {"ch05-binned16", [&] { ch05::build_sah_bvh_fast(in.boxes, in.centroids, binned); }},
+        {to_string(lecture), [&] { build_lbvh(in.boxes, in.centroids, lecture); }},
+        {to_string(karras), [&] { build_lbvh(in.boxes, in.centroids, karras); }},
+    };
+    for (const auto& [builder, build] : builders) {
+        double one = 0;
+        for (const int threads : thread_counts(o)) {
+            const thread_limit limit(threads);
+            const double ms = median_ms(o.repeats, build);
+            if (threads == 1) one = ms;
+            std::printf("  %-14s %7d %9.2f %8.2f\n", builder.c_str(), threads, ms, one / ms);
+            csv << name << ',' << in.boxes.size() << ',' << builder << ',' << threads << ',' << ms << ',' << one / ms << '\n';
+        }
+    }
 }
 
 // Quality: SAH cost and trace speed (one thread) of every LBVH and of chapter 05's binned SAH tree.
@@ -153,6 +181,71 @@ void compare_sorts(const std::string& name, const inputs& in, const options& o, 
         run("tbb::parallel_sort", threads, none, pairs_fn([](std::vector<pair_key>& v) { tbb::parallel_sort(v.begin(), v.end()); }));
 }
 
+// The CSV headers, shared by the writer and by --replot's reader.
+const char* const phases_header = "scene,triangles,builder,threads,codes_ms,sort_ms,hierarchy_ms,boxes_ms,collapse_ms,total_ms";
+const char* const quality_header = "scene,triangles,tree,bits,duplicate_codes,build_ms,sah_cost,depth,nodes,primary_mrays_s,"
+                                   "diffuse_mrays_s,differing";
+const char* const sort_header = "scene,keys,method,threads,ms_30bit,ms_63bit";
+const char* const scaling_header = "scene,triangles,builder,threads,build_ms,speedup";
+
+// The figures, drawn from the three CSV files (this run's, or --replot's):
+//   phases.svg: each phase's share of the 30-bit LBVH's build, per scene and thread count;
+//   build_vs_trace.svg: per scene, build time (log) against primary-ray speed for every tree, one point each;
+//   sort.svg: nanoseconds per 30-bit key for each sort, per scene.
+void write_plots(const fs::path& phases_csv, const fs::path& quality_csv, const fs::path& sort_csv, const fs::path& out) {
+    const char* const phase_names[5] = {"codes", "sort", "hierarchy", "boxes", "collapse"};
+    bar_chart phases{"Where the 30-bit LBVH's build time goes", "share of the build [%]", {}, {}, {}, false};
+    for (const char* n : phase_names) phases.series_labels.push_back(n);
+    phases.values.resize(5);
+    for (const csv_row& r : read_csv(phases_csv, phases_header, "a build_phases.csv written by ch07")) {
+        if (r.cells[2] != "lbvh30") continue;
+        const double total = csv_number(phases_csv, r, 9);
+        double sum = 0;
+        for (int k = 0; k < 5; ++k) sum += csv_number(phases_csv, r, 4 + k);
+        char label[96];
+        std::snprintf(label, sizeof label, "%s, %s thr. (%.1f ms)", r.cells[0].c_str(), r.cells[3].c_str(), total);
+        phases.categories.push_back(label);
+        for (int k = 0; k < 5; ++k) phases.values[k].push_back(sum > 0 ? 100.0 * csv_number(phases_csv, r, 4 + k) / sum : 0.0);
+    }
+    write_svg(out / "phases.svg", to_svg(phases, 900, 440));
+
+    std::vector<plot> panels;
+    std::map<std::string, std::size_t> panel_of;
+    std::vector<std::string> trees;
+    for (const csv_row& r : read_csv(quality_csv, quality_header, "a quality.csv written by ch07")) {
+        if (!panel_of.count(r.cells[0])) {
+            panel_of[r.cells[0]] = panels.size();
+            panels.push_back(plot{r.cells[0] + " (" + r.cells[1] + " triangles)", "build time, one thread [ms]",
+                                  "primary rays [Mrays/s]", true, false, {}, false});
+        }
+        plot& p = panels[panel_of[r.cells[0]]];
+        const auto at = std::find(trees.begin(), trees.end(), r.cells[2]);
+        const int colour = int(at - trees.begin());
+        if (at == trees.end()) trees.push_back(r.cells[2]);
+        plot_series point{r.cells[2], {csv_number(quality_csv, r, 5)}, {csv_number(quality_csv, r, 9)}, false, {}, colour};
+        point.in_legend = panel_of[r.cells[0]] == 0;  // one legend, in the first panel (same colours in all)
+        p.series.push_back(point);
+    }
+    write_svg(out / "build_vs_trace.svg", to_svg(panels, 2, 560, 380));
+
+    bar_chart sorts{"Sorting the 30-bit Morton codes (with their ids)", "time per key [ns]", {}, {}, {}, false};
+    std::map<std::string, std::size_t> series_of, category_of;
+    for (const csv_row& r : read_csv(sort_csv, sort_header, "a sort.csv written by ch07")) {
+        const std::string method = r.cells[2] + (r.cells[3] == "1" ? "" : ", " + r.cells[3] + " threads");
+        const std::string scene = r.cells[0] + " (" + r.cells[1] + ")";
+        if (!series_of.count(method)) series_of[method] = sorts.series_labels.size(), sorts.series_labels.push_back(method);
+        if (!category_of.count(scene)) category_of[scene] = sorts.categories.size(), sorts.categories.push_back(scene);
+    }
+    sorts.values.assign(sorts.series_labels.size(), std::vector<double>(sorts.categories.size(), 0.0));
+    for (const csv_row& r : read_csv(sort_csv, sort_header, "a sort.csv written by ch07")) {
+        const std::string method = r.cells[2] + (r.cells[3] == "1" ? "" : ", " + r.cells[3] + " threads");
+        const double keys = std::max(1.0, csv_number(sort_csv, r, 1));
+        sorts.values[series_of[method]][category_of[r.cells[0] + " (" + r.cells[1] + ")"]] =
+            1e6 * csv_number(sort_csv, r, 4) / keys;
+    }
+    write_svg(out / "sort.svg", to_svg(sorts, 900, 440));
+}
+
 void write_file(const fs::path& path, const std::string& header, const std::ostringstream& rows) {
     std::ofstream f(path);
     f << header << '\n' << rows.str();
@@ -164,14 +257,17 @@ int run(int argc, const char* const* argv) {
     cli args("ch07", "Chapter 07, linear BVHs (" + std::string(track_name()) + "): Morton codes, radix sort, the "
              "hierarchy read off the codes' bits (the lecture's form and Karras's), boxes bottom up, SAH collapse. "
              "Build phases at 1 and N threads, SAH cost and Mrays/s against chapter 05's binned SAH tree, and the "
-             "radix sort against std::sort and tbb::parallel_sort, as tables and CSV files.");
+             "radix sort against std::sort and tbb::parallel_sort, and both builders' speed-up on N threads, as tables "
+             "and CSV files.");
     args.option("scene", "NAME", "all", "stadium, soup, bunny, sponza, teapot or all (all: stadium, soup, bunny, sponza)")
         .option("threads", "N", "2", "the second thread count builds and sorts are timed at, 0..1024 (0: one per core)")
         .option("width", "N", "", "primary rays per row, 1..4096 (default 192, 48 with --quick)")
         .option("height", "N", "", "rows, 1..4096 (default 3/4 of the width)")
         .option("repeats", "K", "", "timed runs per measurement after a warm-up; the median is reported (default 5, "
                 "1 with --quick)")
-        .option("out", "DIR", "", "write the CSV files into DIR/ (default out/07_lbvh/)")
+        .option("out", "DIR", "", "write the CSV files and the plots into DIR/ (default out/07_lbvh/)")
+        .option("replot", "DIR", "", "only redraw the plots (phases.svg, build_vs_trace.svg, sort.svg) from the three CSV "
+                "files in DIR written earlier (no building, no tracing)")
         .flag("force", "replace existing files in a folder named with --out")
         .flag("quick", "the teapot and a soup of 20,000 triangles, 48 x 36 rays, one repeat");
     if (!args.parse(argc, argv)) return 0;
@@ -190,8 +286,24 @@ int run(int argc, const char* const* argv) {
         which != "bunny" && which != "sponza")
         throw usage_error("--scene must be stadium, soup, bunny, sponza, teapot or all, not '" + which + "'");
     const fs::path phases_csv = o.folder / "build_phases.csv", quality_csv = o.folder / "quality.csv",
-                   sort_csv = o.folder / "sort.csv";
-    for (const fs::path& p : {phases_csv, quality_csv, sort_csv}) prepare_output(p, user_named, args.has("force"));
+                   sort_csv = o.folder / "sort.csv", scaling_csv = o.folder / "scaling.csv";
+    const fs::path svgs[3] = {o.folder / "phases.svg", o.folder / "build_vs_trace.svg", o.folder / "sort.svg"};
+    if (args.has("replot")) {
+        // The tables read first: a folder without them leaves no output folder behind.
+        const fs::path from = args.get("replot");
+        for (const char* f : {"build_phases.csv", "quality.csv", "sort.csv"})
+            if (!fs::is_regular_file(from / f)) throw usage_error("--replot: no " + (from / f).string());
+        read_csv(from / "build_phases.csv", phases_header, "a build_phases.csv written by ch07");
+        read_csv(from / "quality.csv", quality_header, "a quality.csv written by ch07");
+        read_csv(from / "sort.csv", sort_header, "a sort.csv written by ch07");
+        for (const fs::path& p : svgs) prepare_output(p, user_named, args.has("force"));
+        write_plots(from / "build_phases.csv", from / "quality.csv", from / "sort.csv", o.folder);
+        std::printf("wrote %s, %s, %s from %s\n", svgs[0].string().c_str(), svgs[1].string().c_str(),
+                    svgs[2].string().c_str(), from.string().c_str());
+        return 0;
+    }
+    for (const fs::path& p : {phases_csv, quality_csv, sort_csv, scaling_csv}) prepare_output(p, user_named, args.has("force"));
+    for (const fs::path& p : svgs) prepare_output(p, user_named, args.has("force"));
 
     std::vector<scene> scenes;
     if (which == "teapot" || which == "quick") scenes.push_back(builtin_scene("teapot"));
@@ -202,22 +314,25 @@ int run(int argc, const char* const* argv) {
         if (which != "all" && which != name) continue;
         if (auto s = load_shared_mesh(file, name)) scenes.push_back(std::move(*s));
     }
-    std::ostringstream phases, quality, sorts;
+    std::ostringstream phases, quality, sorts, scaling;
     for (const scene& s : scenes) {
         const inputs in(s.mesh);
         std::printf("%s: %zu triangles; builds and sorts at 1 and %d threads, tracing on one thread (%d x %d primary "
                     "rays and as many diffuse)\n", s.name.c_str(), in.boxes.size(), o.threads, o.width, o.height);
         std::vector<double> build_ms;
         time_phases(s.name, in, o, phases, build_ms);
+        time_scaling(s.name, in, o, scaling);
         compare_quality(s.name, s, in, o, build_ms, quality);
         compare_sorts(s.name, in, o, sorts);
     }
-    write_file(phases_csv, "scene,triangles,builder,threads,codes_ms,sort_ms,hierarchy_ms,boxes_ms,collapse_ms,total_ms",
-               phases);
-    write_file(quality_csv, "scene,triangles,tree,bits,duplicate_codes,build_ms,sah_cost,depth,nodes,primary_mrays_s,"
-               "diffuse_mrays_s,differing", quality);
-    write_file(sort_csv, "scene,keys,method,threads,ms_30bit,ms_63bit", sorts);
-    std::printf("wrote %s, %s, %s\n", phases_csv.string().c_str(), quality_csv.string().c_str(), sort_csv.string().c_str());
+    write_file(phases_csv, phases_header, phases);
+    write_file(quality_csv, quality_header, quality);
+    write_file(sort_csv, sort_header, sorts);
+    write_file(scaling_csv, scaling_header, scaling);
+    write_plots(phases_csv, quality_csv, sort_csv, o.folder);
+    std::printf("wrote %s, %s, %s, %s and the plots %s, %s, %s\n", phases_csv.string().c_str(),
+                quality_csv.string().c_str(), sort_csv.string().c_str(), scaling_csv.filename().string().c_str(), svgs[0].filename().string().c_str(), svgs[1].filename().string().c_str(),
+                svgs[2].filename().string().c_str());
     return 0;
 }
 

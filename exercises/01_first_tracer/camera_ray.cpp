@@ -4,12 +4,14 @@
 
 namespace strahl::ch01 {
 
-// Build the ray from the camera's eye and basis (cam.eye(), cam.forward(), cam.right(), cam.up()), its
-// cam.tan_half_fov(), cam.aspect(), cam.width() and cam.height(); it must equal cam.generate(x, y).
-//   Step 1, image to NDC: x in [0, W] maps to [-1, 1] left to right, y in [0, H] to [1, -1]: row 0 is on top.
-//   Step 2, NDC to the image plane one unit in front of the eye: half-height tan(fov/2), half-width aspect
-//           times that; the direction is forward + (ndc_x ...) right + (ndc_y ...) up.
-//   Step 3, the ray: origin at the eye, normalised direction, tmin 0, tmax inf.
+// Goal: the primary ray through image coordinate (x, y): origin cam.eye(), normalised direction, tmin 0,
+// tmax inf, equal to cam.generate(x, y). x in [0, W] runs left to right, y in [0, H] top to bottom (row 0 is
+// on top). The camera gives eye(), forward(), right(), up(), tan_half_fov(), aspect(), width(), height().
+// Hint: aim at the image plane one unit in front of the eye: its half-height is tan_half_fov(), its
+// half-width aspect() times that.
+// Why: why is the horizontal offset scaled by the aspect ratio and the vertical one not: which field of view
+// does tan_half_fov() describe?
+// Step by step: README.md, Hints 01.1.
 ray primary_ray(const camera& cam, float x, float y) {
     STRAHL_TODO("01.1 camera ray");
 }

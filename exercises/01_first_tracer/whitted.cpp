@@ -5,16 +5,14 @@
 
 namespace strahl::ch01 {
 
-// Return the radiance arriving along r, a ray at recursion depth `depth` (primary rays: 0).
-//   Step 1, closest hit: w.closest_hit(r, s, ctx.counts.tests); a miss returns w.background. The surface s
-//           gives the point s.p, the normal s.n (already facing the ray) and the material s.mat.
-//   Step 2, direct light: for each light in w.lights whose direction wi from s.p lies on the side of s.n,
-//           count a shadow ray (++ctx.counts.shadow) and, when !w.occluded(shadow_ray(s.p, s.n, light
-//           position), ctx.counts.tests), add s.mat->shade(wo, s.n, wi) * intensity / (squared distance).
-//           wo = -normalize(r.dir) points back to the viewer. No ambient term.
-//   Step 3, reflection: only while depth < ctx.max_depth, for i in [0, s.mat->sample_count()): take
-//           sc = s.mat->sample(normalize(r.dir), s.n, i, ctx.rng), count a reflection ray
-//           (++ctx.counts.reflection) and add sc.weight * trace(w, spawn_ray(s.p, s.n, sc.dir), depth + 1, ctx).
+// Goal: the radiance arriving along r, a ray at recursion depth `depth` (primary rays: 0): the background on
+// a miss; at the closest hit, the light of every point light that a shadow ray reaches (no ambient term),
+// plus the material's reflection rays, each weighted and traced recursively while depth < ctx.max_depth.
+// Every shadow and reflection ray is counted in ctx.counts.
+// Hint: a light on the far side of the surface (wi against s.n) gets no shadow ray at all.
+// Why: why does a rough mirror that sees another mirror cost about S^2 rays per pixel, and what does each of
+// those rays cost in chapter 01's world?
+// Step by step: README.md, Hints 01.4.
 color trace(const world& w, const ray& r, int depth, trace_context& ctx) {
     STRAHL_TODO("01.4 Whitted shading");
 }

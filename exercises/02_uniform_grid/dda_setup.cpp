@@ -5,14 +5,14 @@
 
 namespace strahl::ch02 {
 
-// Return the walk's state for ray r entering the grid at t_enter (the caller clipped r to g.box).
-//   Step 1, the first cell: the cell holding p = r.at(t_enter), per axis
-//           floor((p[a] - g.box.min[a]) * g.inv_cell_size[a]) clamped to [0, g.res[a] - 1].
-//   Step 2, per axis a with r.dir[a] > 0: step +1, t_max = the t where the ray meets the cell's upper face
-//           (x = g.box.min[a] + (cell + 1) * g.cell_size[a]), t_delta = g.cell_size[a] / r.dir[a].
-//   Step 3, per axis with r.dir[a] < 0: step -1, t_max at the cell's lower face (g.box.min[a] + cell *
-//           g.cell_size[a]), t_delta = g.cell_size[a] / |r.dir[a]| (positive).
-//   Step 4, per axis with r.dir[a] == 0 (+0 or -0): step 0, t_max = t_delta = inf.
+// Goal: the walk's state for ray r entering the grid at t_enter (the caller clipped r to g.box): the first
+// cell (the one holding r.at(t_enter), clamped into the grid), and per axis the step (+1, -1 or 0), t_max
+// (the t of the next cell boundary on that axis) and t_delta (the t from one boundary to the next, > 0).
+// Hint: an axis with r.dir[a] == 0 (+0 or -0) never crosses a boundary: step 0, t_max = t_delta = inf, and
+// no division at all.
+// Why: why is t_delta the same for every cell along an axis, and what does that spare the walk compared
+// with intersecting the ray with each cell's box?
+// Step by step: README.md, Hints 02.2.
 dda_state dda_setup(const grid_dims& g, const ray& r, float t_enter) {
     STRAHL_TODO("02.2 DDA set-up");
 }

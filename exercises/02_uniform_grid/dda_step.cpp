@@ -5,11 +5,12 @@
 
 namespace strahl::ch02 {
 
-// Advance s to the next cell along the ray and return true, or return false when the walk ends.
-//   Step 1, pick the axis a with the smallest s.t_max[a]; on ties the lower axis (x before y before z).
-//   Step 2, if s.step[a] == 0 or s.t_max[a] is not finite (inf or NaN): return false (no next cell).
-//   Step 3, s.cell[a] += s.step[a]; if the cell left [0, g.res[a] - 1]: return false.
-//   Step 4, s.t_max[a] += s.t_delta[a] (the next boundary on that axis); return true.
+// Goal: advance s to the next cell along the ray and return true, or return false when the walk ends (no
+// boundary ahead on any axis, or the next cell lies outside the grid). Ties go to the lower axis (x, y, z).
+// Hint: the next cell lies across the boundary the ray meets first: the axis with the smallest s.t_max.
+// Why: a ray through a cell edge ties two axes and so visits one of two cells it only touches; why does
+// neither choice lose a hit (think of the padding of the boxes at insertion), and why fix one all the same?
+// Step by step: README.md, Hints 02.3.
 bool dda_step(const grid_dims& g, dda_state& s) {
     STRAHL_TODO("02.3 DDA step");
 }

@@ -5,11 +5,12 @@
 
 namespace strahl::ch03 {
 
-// Where does a triangle with box b go when its node is split at pos on axis?
-//   planar (b.min[axis] == b.max[axis] == pos): to the side planar_left says;
-//   b.max[axis] <= pos: left (touching the plane from below is still left);
-//   b.min[axis] >= pos: right;
-//   otherwise it straddles the plane: both (one more reference).
+// Goal: where a triangle with box b goes when its node is split at pos on axis: left, right or both. A
+// planar triangle (b.min[axis] == b.max[axis] == pos) goes to the side planar_left says; touching the plane
+// from one side counts as that side; straddling it: both (one more reference).
+// Hint: test the planar case first: a planar box passes both "max <= pos" and "min >= pos".
+// Why: why must these decisions agree exactly with the counts N_L, N_R and N_P of the event sweep (03.1)?
+// Step by step: README.md, Hints 03.2.
 side classify(const aabb& b, int axis, float pos, bool planar_left) {
     STRAHL_TODO("03.2 classify");
 }

@@ -5,15 +5,14 @@
 
 namespace strahl::ch03 {
 
-// The ray's segment [t0, t1] lies in a node split at `split` on `axis`. Return the children it enters, in
-// the order it enters them (child 0 = left, below the plane; 1 = right), each with its part of [t0, t1]:
-//   d = r.dir[axis] == 0 (+0 or -0): the ray stays on its origin's side: left if org < split, right if
-//     org > split, both (left first, each with the whole [t0, t1]) if org == split. No division here.
-//   otherwise t_split = (split - org) * inv_dir[axis], but exactly 0 when org == split (0 * inf is NaN);
-//     lo = t_split - slack, hi = t_split + slack;
-//     near = left if d > 0, else right; far = the other;
-//     near gets [t0, min(t1, hi)], far gets [max(t0, lo), t1]; a child whose range is empty (start > end)
-//     is not visited. (So a plane behind the ray or beyond t1 gives one child only.)
+// Goal: the ray's segment [t0, t1] lies in a node split at `split` on `axis`. Return the children it
+// enters, in the order it enters them (child 0 = left, below the plane; 1 = right), each with its part of
+// [t0, t1], the crossing widened by `slack` on both sides; a child whose part is empty is not visited.
+// Hint: a direction component of +0 or -0 needs no division: the ray stays on its origin's side, and one
+// lying in the plane visits both children (left first) with the whole [t0, t1].
+// Why: why widen the crossing by slack instead of cutting [t0, t1] exactly at t_split: what could a
+// triangle lying in the split plane, or a rounded t_split, make the walk miss?
+// Step by step: README.md, Hints 03.3.
 child_visit near_far(const ray& r, const vec3& inv_dir, int axis, float split, float t0, float t1, float slack) {
     STRAHL_TODO("03.3 near/far and t-split");
 }

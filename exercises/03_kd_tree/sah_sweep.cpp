@@ -6,24 +6,25 @@
 
 namespace strahl::ch03 {
 
-// Step 1, the cost of one plane. Split `box` at `pos` on `axis` into a left box (max[axis] = pos) and a
-// right box (min[axis] = pos); P_L and P_R are their surface areas divided by box's. The cost is
-//   C_T + C_I (P_L n_left + P_R n_right),
-// times (1 - empty_bonus) when n_left or n_right is 0. A box of zero surface area: return inf.
+// Goal, part 1: the SAH cost of splitting `box` at `pos` on `axis` with n_left and n_right triangles on the
+// two sides: C_T + C_I (P_L n_left + P_R n_right), P_L and P_R the children's surface areas over box's,
+// times (1 - empty_bonus) when n_left or n_right is 0. A box of zero surface area: inf.
+// Hint: the children are copies of box, the left with max[axis] = pos, the right with min[axis] = pos.
+// Why: why give a split with an empty child a bonus, when the formula already charges that child nothing?
+// Step by step: README.md, Hints 03.1.
 float split_cost(const aabb& box, int axis, float pos, std::size_t n_left, std::size_t n_right, const sah_params& p) {
     STRAHL_TODO("03.1 SAH event sweep");
 }
 
-// Step 2, the event sweep. The events are sorted (position, then end < planar < start). Keep three counts:
-// N_L (wholly left of the current plane; starts at 0), N_R (still reaching right of it; starts at n),
-// and at each distinct position p count the ends, planars and starts there, then
-//   N_R -= ends + planars;
-//   if p lies strictly inside the box on this axis: cost with the planar triangles on the left,
-//     split_cost(box, axis, p, N_L + planars, N_R), and on the right, split_cost(..., N_L, N_R + planars);
-//     keep the cheaper (left at equal cost) if it beats the best so far (strictly: the lowest p wins ties);
-//   N_L += planars + starts.
-// Return the best as a split_candidate (axis set even when nothing was found, cost = inf then), with
-// n_left = N_L and n_right = N_R at that plane (planar ones in neither) and n_planar = planars.
+// Goal, part 2: the cheapest plane on `axis` over the sorted events (position, then end < planar < start) of
+// n triangles, as a split_candidate: cost, pos, n_left and n_right at that plane (planar triangles in
+// neither), n_planar, and the side the planar triangles go to (the cheaper, left at equal cost). Only planes
+// strictly inside the box count; the lowest position wins ties; nothing found: axis set, cost inf.
+// Hint: keep N_L (starts at 0) and N_R (starts at n): at each distinct position, the triangles ending or
+// lying there leave N_R before the cost is taken, those lying or starting there join N_L after.
+// Why: why does one sweep over sorted events price all the candidate planes in linear time, where counting
+// the triangles on each side of each plane afresh would take quadratic time?
+// Step by step: README.md, Hints 03.1.
 split_candidate sah_sweep(std::span<const event> events, int axis, const aabb& box, std::size_t n,
                           const sah_params& p) {
     STRAHL_TODO("03.1 SAH event sweep");

@@ -5,10 +5,12 @@
 
 namespace strahl::ch05 {
 
-// The bin of centroid coordinate c: int(m.scale * (c - m.lo)), clamped to [0, m.k - 1].
-//   compute f = m.scale * (c - m.lo) as a float;
-//   clamp f first (c == hi gives exactly k; rounding can give k just below hi; NaN goes to bin 0),
-//   then convert: converting a float outside int's range or a NaN is undefined behaviour.
+// Goal: the bin of centroid coordinate c: int(m.scale * (c - m.lo)), clamped to [0, m.k - 1]; a NaN goes to
+// bin 0.
+// Hint: clamp the float, then convert it, never the other way round.
+// Why: why can a centroid inside [lo, hi] land in bin k, and why is converting first and clamping afterwards
+// undefined behaviour rather than merely wrong?
+// Step by step: README.md, Hints 05.2.
 int bin_index(const bin_mapping& m, float c) {
     STRAHL_TODO("05.2 bin assignment");
 }

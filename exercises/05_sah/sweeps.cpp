@@ -5,14 +5,14 @@
 
 namespace strahl::ch05 {
 
-// The boundary b (bins [0, b) left, [b, k) right) with the lowest SAH cost, in two linear sweeps:
-//   fewer than 2 bins: no boundary, return bin_split{} (index 0, cost +inf);
-//   suffix sweep, b = k-1 down to 1: grow a box by bins[b].box, right_area[b] = its surface_area();
-//   prefix sweep, b = 1 up to k-1: grow a box by bins[b-1].box and count N_L (N_R = total - N_L);
-//     skip b if N_L == 0 or N_R == 0;
-//     cost = C_T + C_I * (A(L) * N_L + A(R) * N_R) / area_parent, exercise 05.1's formula (written out
-//     here, not called: each exercise is graded on its own);
-//     keep it if strictly lower than the best so far (so the lowest index wins a tie).
+// Goal: the boundary b (bins [0, b) left, [b, k) right) with the lowest SAH cost (exercise 05.1's formula),
+// found in two linear sweeps; right_area is scratch space of k floats. Boundaries that leave a side empty do
+// not count; the lowest index wins a tie; fewer than 2 bins or no boundary: bin_split{} (index 0, cost inf).
+// Hint: sweep from the right first and store the area of bins b .. k-1 for every b; then one sweep from the
+// left grows the left box and count and prices each boundary once.
+// Why: why do two sweeps of k steps suffice where pricing each boundary from scratch takes k^2 box unions,
+// and why does this step's cost depend on k and not on the number of triangles?
+// Step by step: README.md, Hints 05.3.
 bin_split best_boundary(std::span<const bin> bins, std::span<float> right_area, const sah_costs& c,
                         float area_parent) {
     STRAHL_TODO("05.3 prefix and suffix sweeps");

@@ -5,20 +5,13 @@
 
 namespace strahl::ch06 {
 
-// Evaluate the four rotations at the inner node n (at depth `depth`) and apply the best one if it helps:
-//   best = {rotation::none, 0};
-//   for each rotation, in enum order (L <-> RL, L <-> RR, R <-> LL, R <-> LR):
-//     changed = R for the first two, L for the last two; incoming = n's other child;
-//     skip it if changed is a leaf (the rotation cannot be done);
-//     skip it if depth + 2 + height(incoming) > max_depth (the incoming subtree moves two levels below n);
-//     stays = changed's child that is not taken (RR, RL, LR, LL in that order);
-//     delta = C_T * (A(box(incoming) u box(stays)) - A(box(changed))), exercise 06.1's formula (written
-//       out here, not called: each exercise is graded on its own);
-//     keep it if delta < best.delta (strictly: only a lower cost counts, and the first of equals wins);
-//   if best.r is not none, apply it: `leaves` is changed's child that is taken;
-//     t.replace_child(n, incoming, leaves); t.replace_child(changed, leaves, incoming);
-//     then t.refit(changed) and t.refit(n) (in that order: n's height needs changed's);
-//   return best.
+// Goal: evaluate the four rotations at the inner node n (at depth `depth`), skipping those that cannot be
+// done or would put the incoming subtree deeper than max_depth; apply the best if it lowers the cost, and
+// return it ({rotation::none, 0} when none does). The first of equal rotations, in enum order, wins.
+// Hint: applying is two replace_child calls, then a refit of the changed child before one of n.
+// Why: why does a pass visit the nodes bottom up (children before parents), and why must repeated passes
+// of such strictly improving rotations stop?
+// Step by step: README.md, Hints 06.2.
 rotation_choice apply_best_rotation(refine_tree& t, std::uint32_t n, int depth, int max_depth, float c_traversal) {
     STRAHL_TODO("06.2 best rotation");
 }
