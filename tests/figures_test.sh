@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# ./course figures end to end: the drawn figures of chapters 05, 06, 07 and 11 (plots redrawn from the
+# committed CSVs, diagrams drawn by the chapters' code) come out byte for byte as committed under slides/img/,
+# so that every committed figure is what its program draws; an unknown chapter is refused.
+# Usage: figures_test.sh COURSE_ROOT BIN_FOLDER SCRATCH_FOLDER
+set -euo pipefail
+
+if [[ $# -ne 3 ]]; then
+    echo "usage: $0 COURSE_ROOT BIN_FOLDER SCRATCH_FOLDER" >&2
+    exit 2
+fi
+root=$1 bin=$2 dir=$3
+rm -rf "$dir"
+mkdir -p "$dir"
+source "$(dirname "$0")/script_support.sh"
+
+runs "figures 05 06 07 11" 0 "$root/course" figures 05 06 07 11 --bin "$bin" --into "$dir/tree"
+contains "$dir/out" "files written under" "figures 05 06 07 11"
+n=0
+while IFS= read -r f; do
+    n=$((n + 1))
+    cmp -s "$dir/tree/$f" "$root/$f" || fail "$f: not as committed (redrawn: $dir/tree/$f)"
+done < <(cd "$dir/tree" && find slides -type f | sort)
+[[ $n -ge 11 ]] || fail "only $n figures drawn"
+echo "figures: $n files, each as committed"
+
+runs "figures 99" 1 "$root/course" figures 99 --bin "$bin" --into "$dir/tree2"
+contains "$dir/err" "no chapter 99" "figures 99"
+finish "figures"
