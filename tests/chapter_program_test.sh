@@ -28,10 +28,11 @@ png_size() {
 # The run each chapter gets, the files it must write, and the size of the images named in `sized`.
 out=$dir/out_folder
 case $nn in
-01) args=(--quick --width 40 --out "$out/") files=(cornell.png cornell_rays.png teapot.png teapot_rays.png)
+01) args=(--quick --width 40 --out "$out/") files=(cornell.png cornell_rays.png teapot.png teapot_rays.png
+        renders.csv glossy.csv)
     sized=(teapot.png:"40 30" cornell.png:"40 40") ;;
 02) args=(--quick --width 64 --out "$out") files=(teapot.png teapot_tests.png stadium.png stadium_tests.png
-        lambda_sweep.csv lambda_sweep.svg histogram.svg histogram.csv)
+        scenes.csv insertion.csv lambda_sweep.csv lambda_sweep.svg histogram.svg histogram.csv)
     sized=(teapot.png:"64 48") ;;
 03) args=(--quick --width 64 --out "$out") files=(teapot.png teapot_planes.png teapot_stadium.png
         teapot_stadium_planes.png)
@@ -148,11 +149,24 @@ if [[ $nn == 01 ]]; then
     contains "$dir/sweep/sweep.svg" "slope -1" "--sweep's plot"
 fi
 
+# Chapter 01's tables: the course's teapot (4,096 triangles) by default, and the glossy samples 1, 4, 16, 32.
+if [[ $nn == 01 ]]; then
+    [[ $(awk -F, '$1 == "teapot" { print $2 }' "$out/renders.csv") == 4096 ]] ||
+        fail "renders.csv: the teapot has not the course's 4,096 triangles"
+    [[ $(awk -F, 'NR > 1 { printf "%s ", $1 }' "$out/glossy.csv") == "1 4 16 32 " ]] ||
+        fail "glossy.csv: not a row each for 1, 4, 16 and 32 glossy samples"
+fi
+
 # Chapter 02's histogram: the shares of the references add up to 100% in each scene.
 if [[ $nn == 02 ]]; then
     bad=$(awk -F, 'NR > 1 { t += $3; s += $4 } END { if (t < 99.9 || t > 100.1 || s < 99.9 || s > 100.1) print t, s }' \
           "$out/histogram.csv")
     [[ -z $bad ]] || fail "histogram.csv: the shares of the references add up to $bad, not 100 and 100"
+    # The course's scenes by default: the same teapot (4,096 triangles) alone and in the stadium (7,232).
+    got=$(awk -F, 'NR > 1 && $2 == "triangles" { printf "%s %s ", $1, $3 }' "$out/scenes.csv")
+    [[ $got == "teapot 4096 stadium 7232 " ]] || fail "scenes.csv: scenes '$got', not teapot 4096 and stadium 7232"
+    [[ $(tail -n +2 "$out/insertion.csv" | cut -d, -f1 | tr '\n' ' ') == "box exact " ]] ||
+        fail "insertion.csv: not a box and an exact row"
 fi
 
 # Chapter 04's --sweep: per mesh size a brute-force row (tests per ray = N) and three structures, each with

@@ -1,6 +1,7 @@
 // ch01: the first tracer. Renders the Cornell box (with a mirror and a rough-mirror sphere) and the
 // teapot with brute-force Whitted ray tracing, and prints what it cost: rays by kind, rays per pixel,
-// Mrays/s, primitive tests per ray. --sweep measures how that cost grows with the triangle count.
+// Mrays/s, primitive tests per ray, also as tables (renders.csv; glossy.csv: the Cornell box's rays at 1 to 32
+// glossy samples). --sweep measures how that cost grows with the triangle count.
 #include "strahl/ch01/render.hpp"
 #include "strahl/parallel.hpp"
 #include "strahl/plot.hpp"
@@ -70,17 +71,85 @@ fs::path heat_path_for(const fs::path& image) {
     return heat;
 }
 
-void render_job(const job& j, const cli& args, const output_plan& plan) {
+// Where the S samples per glossy hit are paid: the pixels whose primary ray meets a rough mirror first,
+// which the average over the whole image dilutes. Scenes without a rough mirror skip the extra pass.
+struct rough_share {
+    std::size_t pixels = 0;
+    double rays = 0.0;  // the rays those pixels cost, in all
+};
+
+rough_share rough_pixels_of(const job& j, const world& w, const camera& cam, const std::vector<float>& rays_per_pixel) {
+    rough_share out;
+    if (std::none_of(j.s.materials.begin(), j.s.materials.end(),
+                     [](const material_desc& m) { return m.kind == material_kind::rough_mirror; }))
+        return out;
+    counting uncounted;
+    for (int y = 0; y < j.height; ++y)
+        for (int x = 0; x < j.width; ++x) {
+            surface sf;
+            if (!w.closest_hit(cam.pixel_ray(x, y), sf, uncounted)) continue;
+            const std::uint32_t m = w.primitives[sf.h.prim]->material();
+            if (m >= j.s.materials.size() || j.s.materials[m].kind != material_kind::rough_mirror) continue;
+            out.rays += rays_per_pixel[std::size_t(y) * j.width + x];
+            ++out.pixels;
+        }
+    return out;
+}
+
+// One rendered scene, as renders.csv holds it.
+struct render_row {
+    std::string scene;
     world_counts n;
-    const world w = build_world(j.s, args.get_int("glossy-samples"), &n);
+    std::size_t primitives = 0;
+    int width = 0, height = 0, depth = 0, glossy = 0;
+    ray_counts rays;
+    float most = 0.0f;
+    rough_share rough;
+    double seconds = 0.0, tests_per_ray = 0.0;
+    double pixels() const { return double(width) * double(height); }
+    double mrays() const { return double(rays.total()) / seconds * 1e-6; }
+};
+
+const char* const renders_header =
+    "scene,triangles,spheres,planes,primitives,width,height,depth,glossy_samples,primary_rays,shadow_rays,"
+    "reflection_rays,rays,rays_per_pixel,max_rays_per_pixel,rough_pixels,rough_pixels_percent,"
+    "rough_rays_per_pixel,seconds,mrays_per_s,prim_tests_per_ray";
+
+void write_render_row(std::ostream& csv, const render_row& r) {
+    csv << csv_field(r.scene) << ',' << r.n.triangles << ',' << r.n.spheres << ',' << r.n.planes << ','
+        << r.primitives << ',' << r.width << ',' << r.height << ',' << r.depth << ',' << r.glossy << ','
+        << r.rays.primary << ',' << r.rays.shadow << ',' << r.rays.reflection << ',' << r.rays.total() << ','
+        << double(r.rays.total()) / r.pixels() << ',' << r.most << ',' << r.rough.pixels << ','
+        << 100.0 * double(r.rough.pixels) / r.pixels() << ','
+        << (r.rough.pixels ? r.rough.rays / double(r.rough.pixels) : 0.0) << ',' << r.seconds << ',' << r.mrays()
+        << ',' << r.tests_per_ray << '\n';
+}
+
+// Renders one job at S glossy samples; writes nothing.
+render_row render_counted(const job& j, const cli& args, int glossy, render_result* result = nullptr) {
+    render_row row;
+    const world w = build_world(j.s, glossy, &row.n);
     const camera cam = scene_camera(j.s, j.width, j.height);
-    const fs::path path = plan.path_for(j.name);
-    prepare_output(path, plan.user_named, args.has("force"));  // refuse before spending the time
     render_settings settings;
     settings.max_depth = args.get_int("depth");
     settings.seed = std::uint64_t(args.get_int("seed"));
-    settings.progress_label = j.name;
-    const render_result r = render(w, cam, settings);
+    if (result) settings.progress_label = j.name;
+    render_result r = render(w, cam, settings);
+    const counter_values c = r.counts.tests.values();
+    row.scene = j.name, row.primitives = w.primitives.size(), row.width = j.width, row.height = j.height;
+    row.depth = settings.max_depth, row.glossy = glossy, row.rays = r.counts, row.seconds = r.seconds;
+    row.most = *std::max_element(r.rays_per_pixel.begin(), r.rays_per_pixel.end());
+    row.tests_per_ray = c.per_ray(c.prim_tests);
+    row.rough = rough_pixels_of(j, w, cam, r.rays_per_pixel);
+    if (result) *result = std::move(r);
+    return row;
+}
+
+render_row render_job(const job& j, const cli& args, const output_plan& plan) {
+    const fs::path path = plan.path_for(j.name);
+    prepare_output(path, plan.user_named, args.has("force"));  // refuse before spending the time
+    render_result r;
+    const render_row row = render_counted(j, args, args.get_int("glossy-samples"), &r);
     write_image(path, r.img);
     // Where the rays went: a heat map of log2(rays per pixel) beside the image (rough mirrors light up).
     const fs::path heat_path = heat_path_for(path);
@@ -89,39 +158,42 @@ void render_job(const job& j, const cli& args, const output_plan& plan) {
     std::transform(r.rays_per_pixel.begin(), r.rays_per_pixel.end(), log_rays.begin(),
                    [](float n) { return std::log2(std::max(1.0f, n)); });
     write_image(heat_path, heat_map(log_rays, j.width, j.height, "log2 of rays per pixel"));
-    const float most = *std::max_element(r.rays_per_pixel.begin(), r.rays_per_pixel.end());
-    // The pixels whose primary ray meets a rough mirror: there the S samples per glossy hit are paid, which
-    // the average over the whole image dilutes.
-    double rough_rays = 0.0;
-    std::size_t rough_pixels = 0;
-    counting uncounted;
-    for (int y = 0; y < j.height; ++y)
-        for (int x = 0; x < j.width; ++x) {
-            surface sf;
-            if (!w.closest_hit(cam.pixel_ray(x, y), sf, uncounted)) continue;
-            const std::uint32_t m = w.primitives[sf.h.prim]->material();
-            if (m >= j.s.materials.size() || j.s.materials[m].kind != material_kind::rough_mirror) continue;
-            rough_rays += r.rays_per_pixel[std::size_t(y) * j.width + x];
-            ++rough_pixels;
-        }
 
-    const auto pixels = std::uint64_t(j.width) * std::uint64_t(j.height);
-    const counter_values c = r.counts.tests.values();
     std::printf("%s: %s triangles, %zu spheres, %zu planes (%zu primitives); %d x %d pixels, depth %d, "
                 "%d glossy samples\n",
-                j.name.c_str(), grouped(n.triangles).c_str(), n.spheres, n.planes, w.primitives.size(), j.width,
-                j.height, settings.max_depth, args.get_int("glossy-samples"));
+                j.name.c_str(), grouped(row.n.triangles).c_str(), row.n.spheres, row.n.planes, row.primitives,
+                j.width, j.height, row.depth, row.glossy);
     std::printf("  rays     primary %s, shadow %s, reflection %s: %s in all, %.2f per pixel (at most %.0f)\n",
-                grouped(r.counts.primary).c_str(), grouped(r.counts.shadow).c_str(),
-                grouped(r.counts.reflection).c_str(), grouped(r.counts.total()).c_str(),
-                double(r.counts.total()) / double(pixels), double(most));
-    if (rough_pixels > 0)
+                grouped(row.rays.primary).c_str(), grouped(row.rays.shadow).c_str(),
+                grouped(row.rays.reflection).c_str(), grouped(row.rays.total()).c_str(),
+                double(row.rays.total()) / row.pixels(), double(row.most));
+    if (row.rough.pixels > 0)
         std::printf("  rough    %s pixels (%.1f%%) see a rough mirror first: %.2f rays per pixel there\n",
-                    grouped(rough_pixels).c_str(), 100.0 * double(rough_pixels) / double(pixels),
-                    rough_rays / double(rough_pixels));
-    std::printf("  time     %.2f s, %.2f Mrays/s, %.1f primitive tests per ray\n", r.seconds,
-                double(r.counts.total()) / r.seconds * 1e-6, c.per_ray(c.prim_tests));
+                    grouped(row.rough.pixels).c_str(), 100.0 * double(row.rough.pixels) / row.pixels(),
+                    row.rough.rays / double(row.rough.pixels));
+    std::printf("  time     %.2f s, %.2f Mrays/s, %.1f primitive tests per ray\n", row.seconds, row.mrays(),
+                row.tests_per_ray);
     std::printf("  wrote    %s, %s\n", path.string().c_str(), heat_path.string().c_str());
+    return row;
+}
+
+// What the glossy samples cost: the Cornell box at S = 1, 4, 16, 32 reflection rays per rough-mirror hit.
+void glossy_table(const job& j, const cli& args, const fs::path& csv_path) {
+    std::printf("glossy samples, %s: rays per pixel where a rough mirror is seen first, and over the image\n",
+                j.name.c_str());
+    std::printf("  %8s  %12s  %14s  %14s  %12s\n", "S", "rays", "per pixel", "at most", "rough, each");
+    std::ofstream csv(csv_path);
+    csv << "glossy_samples,rays,rays_per_pixel,max_rays_per_pixel,rough_pixels,rough_pixels_percent,"
+           "rough_rays_per_pixel\n";
+    for (const int s : {1, 4, 16, 32}) {
+        const render_row r = render_counted(j, args, s);
+        const double rough = r.rough.pixels ? r.rough.rays / double(r.rough.pixels) : 0.0;
+        std::printf("  %8d  %12s  %14.2f  %14.0f  %12.2f\n", s, grouped(r.rays.total()).c_str(),
+                    double(r.rays.total()) / r.pixels(), double(r.most), rough);
+        csv << s << ',' << r.rays.total() << ',' << double(r.rays.total()) / r.pixels() << ',' << r.most << ','
+            << r.rough.pixels << ',' << 100.0 * double(r.rough.pixels) / r.pixels() << ',' << rough << '\n';
+    }
+    std::printf("  wrote    %s\n", csv_path.string().c_str());
 }
 
 // The linear cost of brute force: the teapot ever finer, primary rays only, at a small size.
@@ -188,13 +260,14 @@ int run(int argc, const char* const* argv) {
         .option("width", "N", "", "image width, 1..16384 (default 512 for cornell and teapot, 256 with --quick; "
                                   "16384 x 16384 needs about 10 GB of memory: refused where the machine has less)")
         .option("height", "N", "", "image height, 1..16384 (default: as wide for cornell, 3/4 of it otherwise)")
-        .option("teapot-res", "N", "", "teapot patches tessellated N x N: 64 N^2 triangles (default 6, 4 quick)")
+        .option("teapot-res", "N", "", "teapot patches tessellated N x N: 64 N^2 triangles "
+                "(default 8: the course's teapot)")
         .option("depth", "N", "5", "Whitted recursion limit: reflection rays up to this depth")
         .option("glossy-samples", "S", "16", "reflection rays per rough-mirror hit")
         .option("threads", "N", "0", "worker threads, 0..1024 (0: one per core)")
         .option("seed", "N", "1", "random seed of the rough-mirror samples")
-        .option("out", "FILE|DIR", "", "write the image to FILE (and its ray heat map to FILE_rays.png), or the images into DIR/ "
-                "(default out/01_first_tracer/)")
+        .option("out", "FILE|DIR", "", "write the image to FILE (and its ray heat map to FILE_rays.png), or the "
+                "images, renders.csv and glossy.csv into DIR/ (default out/01_first_tracer/)")
         .flag("force", "replace an existing file named with --out")
         .flag("quick", "smaller images for a fast look (./course run)")
         .flag("sweep", "measure brute force against the triangle count instead (writes sweep.csv, sweep.svg)");
@@ -213,7 +286,8 @@ int run(int argc, const char* const* argv) {
         return v;
     };
     const int width = size_option("width", quick ? 256 : 512);
-    const int teapot_res = args.has("teapot-res") ? args.get_int("teapot-res") : (quick ? 4 : 6);
+    // The course's teapot (builtin_scene("teapot"): resolution 8, 4,096 triangles), quick or not.
+    const int teapot_res = args.has("teapot-res") ? args.get_int("teapot-res") : 8;
     if (teapot_res < 1 || teapot_res > 64) throw usage_error("--teapot-res must lie in [1, 64]");
 
     if (args.has("sweep")) {
@@ -248,7 +322,24 @@ int run(int argc, const char* const* argv) {
         prepare_output(plan.path_for(j.name), plan.user_named, args.has("force"));
         prepare_output(heat_path_for(plan.path_for(j.name)), plan.user_named, args.has("force"));
     }
-    for (const job& j : jobs) render_job(j, args, plan);
+    // Into a folder the run also writes its figures as tables: renders.csv (a row per scene) and, with the
+    // Cornell box, glossy.csv (its rays at S = 1, 4, 16, 32 glossy samples).
+    const fs::path renders_csv = plan.folder / "renders.csv", glossy_csv = plan.folder / "glossy.csv";
+    if (plan.file.empty()) {
+        prepare_output(renders_csv, plan.user_named, args.has("force"));
+        if (std::any_of(jobs.begin(), jobs.end(), [](const job& j) { return j.name == "cornell"; }))
+            prepare_output(glossy_csv, plan.user_named, args.has("force"));
+    }
+    std::vector<render_row> rows;
+    for (const job& j : jobs) rows.push_back(render_job(j, args, plan));
+    if (plan.file.empty()) {  // into a folder: the figures as tables too
+        std::ofstream csv(renders_csv);
+        csv << renders_header << '\n';
+        for (const render_row& r : rows) write_render_row(csv, r);
+        std::printf("  wrote    %s\n", renders_csv.string().c_str());
+        for (const job& j : jobs)
+            if (j.name == "cornell") glossy_table(j, args, glossy_csv);
+    }
     return 0;
 }
 

@@ -1,8 +1,8 @@
 // ch02: the uniform grid. Renders the teapot and the teapot in a stadium through the grid (primary rays,
 // facing ratio), and prints what the grid is and costs: cells, occupancy, references per triangle, tests per
-// ray, Mrays/s over plain triangles and over chapter 01's virtual objects; box against exact insertion; the
-// stadium against the teapot alone at an equal triangle count; and lambda swept against build time, memory
-// and rays/s.
+// ray, Mrays/s over plain triangles and over chapter 01's virtual objects (scenes.csv); box against exact
+// insertion (insertion.csv); the same teapot alone and in a stadium; and lambda swept against build time,
+// memory and rays/s (lambda_sweep.csv).
 #include "strahl/ch02/accel.hpp"
 #include "strahl/ch02/measure.hpp"
 #include "strahl/parallel.hpp"
@@ -78,8 +78,26 @@ void print_grid(const measured& m) {
                 o.mean_per_cell, o.mean_per_nonempty, o.max_per_cell, o.references_per_prim);
 }
 
+// scenes.csv: a row per scene and primitive kind, the grid and what a primary ray costs in it.
+const char* const scenes_header =
+    "scene,primitives,triangles,width,height,lambda,nx,ny,nz,cells,empty_percent,mean_per_cell,"
+    "mean_per_nonempty_cell,max_per_cell,refs_per_triangle,build_ms,memory_bytes,memory_mb,cells_per_ray,"
+    "tests_per_ray,mrays_per_s";
+
+void scene_row(std::ostream& csv, const std::string& name, const char* kind, const scene& s, const camera& cam,
+               const grid_options& opt, const measured& m) {
+    const grid_stats& o = m.occ;
+    const counter_values& c = m.tr.counts;
+    csv << name << ',' << kind << ',' << s.mesh.triangle_count() << ',' << cam.width() << ',' << cam.height() << ','
+        << opt.lambda << ',' << m.dims.res.x << ',' << m.dims.res.y << ',' << m.dims.res.z << ',' << o.cells << ','
+        << 100.0 * double(o.empty_cells) / double(o.cells) << ',' << o.mean_per_cell << ',' << o.mean_per_nonempty
+        << ',' << o.max_per_cell << ',' << o.references_per_prim << ',' << m.build_ms << ','
+        << m.acc->memory_bytes() << ',' << double(m.acc->memory_bytes()) / 1e6 << ',' << c.per_ray(c.nodes_visited)
+        << ',' << c.per_ray(c.prim_tests) << ',' << m.tr.mrays << '\n';
+}
+
 void render_scene(const context& ctx, const scene& s, const std::string& name, const grid_options& opt,
-                  grid_stats* occ_out, int shrink = 1) {
+                  grid_stats* occ_out, std::ostream& csv, int shrink = 1) {
     const camera cam(s.camera, ctx.width / shrink, ctx.height / shrink);
     const std::vector<ray> rays = primary_rays(cam);
     std::printf("%s: %zu triangles, %d x %d primary rays, lambda %g\n", name.c_str(), s.mesh.triangle_count(),
@@ -90,6 +108,8 @@ void render_scene(const context& ctx, const scene& s, const std::string& name, c
     print_row("triangles", tri);
     const measured obj = measure(s, true, opt, rays, ctx.runs, name + " (virtual)");
     print_row("virtual objects", obj);
+    scene_row(csv, name, "triangles", s, cam, opt, tri);
+    scene_row(csv, name, "virtual objects", s, cam, opt, obj);
     const fs::path img = ctx.file(name + ".png"), heat = ctx.file(name + "_tests.png");
     write_image(img, facing_image(s.mesh, cam, rays, tri.tr.hits));
     write_image(heat, heat_map(tests_per_pixel(*tri.acc, rays), cam.width(), cam.height(), "triangle tests per ray"));
@@ -107,13 +127,23 @@ void box_vs_exact(const context& ctx, const scene& s) {
                 s.name.c_str(), s.mesh.triangle_count());
     std::printf("  %-22s %8s %9s %10s %9s %9s %12s %8s\n", "", "build ms", "memory MB", "cells/ray", "tests/ray",
                 "Mrays/s", "refs/tri", "empty %");
+    const fs::path csv_path = ctx.file("insertion.csv");
+    std::ofstream csv(csv_path);
+    csv << "insertion,triangles,cells,build_ms,memory_bytes,memory_mb,cells_per_ray,tests_per_ray,mrays_per_s,"
+           "refs_per_triangle,empty_percent\n";
     for (const auto* m : {&b, &e}) {
         const counter_values& c = m->tr.counts;
+        csv << (m == &b ? "box" : "exact") << ',' << s.mesh.triangle_count() << ',' << m->occ.cells << ','
+            << m->build_ms << ',' << m->acc->memory_bytes() << ',' << double(m->acc->memory_bytes()) / 1e6 << ','
+            << c.per_ray(c.nodes_visited) << ',' << c.per_ray(c.prim_tests) << ',' << m->tr.mrays << ','
+            << m->occ.references_per_prim << ',' << 100.0 * double(m->occ.empty_cells) / double(m->occ.cells)
+            << '\n';
         std::printf("  %-22s %8.1f %9.2f %10.1f %9.1f %9.2f %12.2f %8.1f\n", m == &b ? "box" : "exact",
                     m->build_ms, double(m->acc->memory_bytes()) / 1e6, c.per_ray(c.nodes_visited),
                     c.per_ray(c.prim_tests), m->tr.mrays, m->occ.references_per_prim,
                     100.0 * double(m->occ.empty_cells) / double(m->occ.cells));
     }
+    std::printf("  wrote    %s\n", csv_path.string().c_str());
 }
 
 void lambda_sweep(const context& ctx, const scene& s, bool quick) {
@@ -147,25 +177,12 @@ void lambda_sweep(const context& ctx, const scene& s, bool quick) {
     std::printf("  wrote    %s, %s\n", csv_path.string().c_str(), svg_path.string().c_str());
 }
 
-// The teapot in a stadium at (close to) the teapot's own triangle count: stadium segments and a smaller
-// teapot chosen so that the totals match.
-scene matching_stadium(std::size_t target) {
-    scene best;
-    std::size_t best_diff = ~std::size_t(0);
-    for (int segs : {32, 48, 64, 96, 128})
-        for (int r = 1; r <= 32; ++r) {
-            const std::size_t n = 64u * std::size_t(r * r) + 49u * std::size_t(segs);  // teapot + stadium
-            const std::size_t diff = n > target ? n - target : target - n;
-            if (diff < best_diff) best_diff = diff, best = teapot_in_stadium(r, segs);
-        }
-    return best;
-}
-
 int run(int argc, const char* const* argv) {
     cli args("ch02", "Chapter 02, the uniform grid (" + std::string(track_name()) + "): 3D-DDA traversal with mailboxing; occupancy, "
              "tests per ray and Mrays/s on the teapot and the teapot in a stadium; box against exact insertion; "
              "lambda swept.");
-    args.option("teapot-res", "N", "", "teapot patches tessellated N x N: 64 N^2 triangles (default 12, 6 quick)")
+    args.option("teapot-res", "N", "", "teapot patches tessellated N x N: 64 N^2 triangles, alone and in the "
+                "stadium (default 8: the course's teapot and teapot_stadium)")
         .option("lambda", "L", "4", "cells per triangle")
         .option("width", "N", "", "image width, 8..8192 (default 512, 256 with --quick); height 3/4 of it")
         .option("threads", "N", "0", "worker threads, 0..1024 (0: one per core)")
@@ -181,7 +198,7 @@ int run(int argc, const char* const* argv) {
     if (ctx.width < 8 || ctx.width > 8192) throw usage_error("--width must lie in [8, 8192]");
     ctx.height = ctx.width * 3 / 4;
     ctx.runs = quick ? 1 : 3;
-    const int res = args.has("teapot-res") ? args.get_int("teapot-res") : (quick ? 6 : 12);
+    const int res = args.has("teapot-res") ? args.get_int("teapot-res") : 8;
     if (res < 1 || res > 64) throw usage_error("--teapot-res must lie in [1, 64]");
     grid_options opt;
     opt.lambda = float(args.get_double("lambda"));
@@ -192,17 +209,25 @@ int run(int argc, const char* const* argv) {
                  "a " + std::to_string(ctx.width) + " x " + std::to_string(ctx.height) + " image");
 
     // Refuse before spending the time: every file this run writes.
-    for (const char* f : {"teapot.png", "teapot_tests.png", "stadium.png", "stadium_tests.png", "histogram.svg", "histogram.csv",
-                          "lambda_sweep.csv", "lambda_sweep.svg"})
+    for (const char* f : {"teapot.png", "teapot_tests.png", "stadium.png", "stadium_tests.png", "scenes.csv",
+                          "histogram.svg", "histogram.csv", "insertion.csv", "lambda_sweep.csv", "lambda_sweep.svg"})
         ctx.file(f);
-    const scene teapot = teapot_scene(res);
-    const scene stadium = matching_stadium(teapot.mesh.triangle_count());
+    // The same teapot, alone and in a stadium: by default the course's builtin scenes teapot (4,096 triangles)
+    // and teapot_stadium (those 4,096 and 3,136 of the stadium).
+    const scene teapot = args.has("teapot-res") ? teapot_scene(res) : builtin_scene("teapot");
+    const scene stadium = args.has("teapot-res") ? teapot_in_stadium(res) : builtin_scene("teapot_stadium");
     grid_stats occ_teapot, occ_stadium;
-    render_scene(ctx, teapot, "teapot", opt, &occ_teapot);
-    std::printf("the teapot in a stadium at an equal triangle count: %zu triangles against the teapot's %zu\n",
-                stadium.mesh.triangle_count(), teapot.mesh.triangle_count());
-    // A quarter of the width: in the stadium a ray costs a thousand tests, and the default run stays short.
-    render_scene(ctx, stadium, "stadium", opt, &occ_stadium, 4);
+    const fs::path scenes_csv = ctx.file("scenes.csv");
+    std::ofstream scenes(scenes_csv);
+    scenes << scenes_header << '\n';
+    render_scene(ctx, teapot, "teapot", opt, &occ_teapot, scenes);
+    std::printf("the same teapot in a stadium: %zu triangles, the teapot's %zu and the stadium's %zu\n",
+                stadium.mesh.triangle_count(), teapot.mesh.triangle_count(),
+                stadium.mesh.triangle_count() - teapot.mesh.triangle_count());
+    // A quarter of the width: in the stadium a ray costs thousands of tests, and the default run stays short.
+    render_scene(ctx, stadium, "stadium", opt, &occ_stadium, scenes, 4);
+    scenes.close();
+    std::printf("  wrote    %s\n", scenes_csv.string().c_str());
 
     // What a ray meets: the share of the triangle references that sit in cells holding k triangles, k in
     // log2 bins (1, 2-3, 4-7, ...). A share of the cells would hide the stadium's crowd: its cells are
