@@ -31,7 +31,7 @@ case $nn in
 01) args=(--quick --width 40 --out "$out/") files=(cornell.png cornell_rays.png teapot.png teapot_rays.png
         renders.csv glossy.csv)
     sized=(teapot.png:"40 30" cornell.png:"40 40") ;;
-02) args=(--quick --width 64 --out "$out") files=(teapot.png teapot_tests.png stadium.png stadium_tests.png
+02) args=(--quick --width 64 --out "$out") files=(teapot.png teapot_tests.png stadium.png stadium_tests.png stadium_grid.png
         scenes.csv insertion.csv lambda_sweep.csv lambda_sweep.svg histogram.svg histogram.csv)
     sized=(teapot.png:"64 48") ;;
 03) args=(--quick --width 64 --out "$out") files=(teapot.png teapot_planes.png teapot_stadium.png

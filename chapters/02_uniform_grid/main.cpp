@@ -5,6 +5,8 @@
 // memory and rays/s (lambda_sweep.csv).
 #include "strahl/ch02/accel.hpp"
 #include "strahl/ch02/measure.hpp"
+#include "strahl/display.hpp"
+#include "strahl/scene.hpp"
 #include "strahl/parallel.hpp"
 #include "strahl/plot.hpp"
 #include "strahl/procedural.hpp"
@@ -117,6 +119,50 @@ void render_scene(const context& ctx, const scene& s, const std::string& name, c
     *occ_out = tri.occ;
 }
 
+// The stadium seen from outside, large, with its grid drawn: the cell lattice on the floor of the grid's
+// box, the box's edges, and in red the cells that hold at least `crowd` triangles, all of them the teapot's,
+// in the middle of a bowl of mostly empty cells.
+void stadium_from_outside(const context& ctx, const scene& s, const grid_options& opt, std::size_t crowd) {
+    const auto acc = make_accel(false, opt);
+    acc->build(s);
+    const uniform_grid& g = grid_of(*acc, false);
+    const grid_dims& d = g.dims();
+    camera_desc view = frame_camera(s.mesh.bounds(), 30.0f);
+    const vec3 centre = s.mesh.bounds().centroid(), back = view.eye - centre;
+    view.eye = centre + glm::length(back) * glm::normalize(vec3(0.45f, 1.0f, 0.8f));  // above and beside
+    const camera cam(view, ctx.width * 3 / 2, ctx.height * 3 / 2);  // larger: 68 cells across must show
+    const std::vector<ray> rays = primary_rays(cam);
+    const trace_result tr = trace(*acc, rays, 1);
+    image img = facing_image(s.mesh, cam, rays, tr.hits);
+    std::vector<line_segment> lines;
+    const color lattice{0.15f, 0.35f, 0.85f}, red{1.0f, 0.15f, 0.1f};
+    for (int x = 0; x <= d.res.x; ++x) {
+        const float px = d.box.min.x + float(x) * d.cell_size.x;
+        lines.push_back({vec3(px, d.box.min.y, d.box.min.z), vec3(px, d.box.min.y, d.box.max.z), lattice});
+    }
+    for (int z = 0; z <= d.res.z; ++z) {
+        const float pz = d.box.min.z + float(z) * d.cell_size.z;
+        lines.push_back({vec3(d.box.min.x, d.box.min.y, pz), vec3(d.box.max.x, d.box.min.y, pz), lattice});
+    }
+    const auto frame = box_wireframe(d.box, color{1.0f, 1.0f, 1.0f});
+    lines.insert(lines.end(), frame.begin(), frame.end());
+    std::size_t crowded = 0;
+    for (int z = 0; z < d.res.z; ++z)
+        for (int y = 0; y < d.res.y; ++y)
+            for (int x = 0; x < d.res.x; ++x) {
+                const int c = d.index(ivec3(x, y, z));
+                if (g.cells().offsets[std::size_t(c) + 1] - g.cells().offsets[std::size_t(c)] < crowd) continue;
+                ++crowded;
+                const auto e = box_wireframe(d.cell_box(ivec3(x, y, z)), red);
+                lines.insert(lines.end(), e.begin(), e.end());
+            }
+    draw_lines(img, cam, lines, 1.0f);
+    const fs::path file = ctx.file("stadium_grid.png");
+    write_image(file, img);
+    std::printf("  the grid from outside: %d x %d x %d cells; %zu of them (red) hold %zu or more triangles\n"
+                "  wrote    %s\n", d.res.x, d.res.y, d.res.z, crowded, crowd, file.string().c_str());
+}
+
 // Box against exact insertion: a triangle's box overlaps more cells than the triangle does.
 void box_vs_exact(const context& ctx, const scene& s) {
     const std::vector<ray> rays = primary_rays(camera(s.camera, ctx.width, ctx.height));
@@ -209,7 +255,7 @@ int run(int argc, const char* const* argv) {
                  "a " + std::to_string(ctx.width) + " x " + std::to_string(ctx.height) + " image");
 
     // Refuse before spending the time: every file this run writes.
-    for (const char* f : {"teapot.png", "teapot_tests.png", "stadium.png", "stadium_tests.png", "scenes.csv",
+    for (const char* f : {"teapot.png", "teapot_tests.png", "stadium.png", "stadium_tests.png", "stadium_grid.png", "scenes.csv",
                           "histogram.svg", "histogram.csv", "insertion.csv", "lambda_sweep.csv", "lambda_sweep.svg"})
         ctx.file(f);
     // The same teapot, alone and in a stadium: by default the course's builtin scenes teapot (4,096 triangles)
@@ -226,6 +272,7 @@ int run(int argc, const char* const* argv) {
                 stadium.mesh.triangle_count() - teapot.mesh.triangle_count());
     // A quarter of the width: in the stadium a ray costs thousands of tests, and the default run stays short.
     render_scene(ctx, stadium, "stadium", opt, &occ_stadium, scenes, 4);
+    stadium_from_outside(ctx, stadium, opt, 256);
     scenes.close();
     std::printf("  wrote    %s\n", scenes_csv.string().c_str());
 
