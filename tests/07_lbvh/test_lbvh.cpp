@@ -12,6 +12,7 @@
 #include "strahl/rng.hpp"
 #include "bvh_rays.hpp"
 #include "differences.hpp"
+#include "flat_bvh_check.hpp"
 #include "exactness.hpp"
 #include <algorithm>
 #include <catch2/catch.hpp>
@@ -67,53 +68,6 @@ int check_radix_tree(const radix_tree& t, std::size_t n) {
     }
     CHECK(std::count(reached.begin(), reached.end(), 1) == std::ptrdiff_t(n));
     return depth;
-}
-
-bool same_box(const aabb& a, const aabb& b) { return a.min == b.min && a.max == b.max; }
-
-// Chapter 04's invariants, and tight boxes: a leaf's box is its primitives' boxes' union, an inner node's
-// its children's union (so each child lies inside its parent). Counts the nodes that break them in `wrong`
-// (one CHECK for the tree, not one per node). Returns the depth below node i.
-int check_node(const ch04::bvh& t, std::uint32_t i, const inputs& in, int max_leaf, std::vector<int>& seen,
-               std::size_t& wrong) {
-    const ch04::bvh_node& n = t.nodes[i];
-    aabb tight;
-    int depth = 0;
-    if (n.is_leaf()) {
-        wrong += n.count > max_leaf;
-        for (std::uint32_t k = n.offset; k < n.offset + n.count; ++k) tight.grow(in.boxes[t.prim_ids[k]]), ++seen[t.prim_ids[k]];
-    } else {
-        REQUIRE(n.offset > i + 1);
-        wrong += n.axis >= 3;
-        tight = unite(t.nodes[i + 1].box(), t.nodes[n.offset].box());
-        depth = 1 + std::max(check_node(t, i + 1, in, max_leaf, seen, wrong), check_node(t, n.offset, in, max_leaf, seen, wrong));
-    }
-    wrong += !same_box(tight, n.box());
-    return depth;
-}
-
-void check_tree(const ch04::bvh& t, const inputs& in, int max_leaf = 4, int max_depth = ch04::bvh_max_depth) {
-    CHECK(t.stats.primitives == in.boxes.size());
-    std::vector<int> seen(in.boxes.size(), 0);
-    for (const std::uint32_t id : t.loose) {
-        CHECK_FALSE(ch04::fits_in_tree(in.boxes[id], in.centroids[id]));
-        ++seen[id];
-    }
-    CHECK(t.prim_ids.size() + t.loose.size() == in.boxes.size());
-    if (t.prim_ids.empty()) {
-        CHECK(t.nodes.empty());
-    } else {
-        REQUIRE(!t.nodes.empty());
-        CHECK(t.nodes.size() == 2 * t.stats.leaves - 1);
-        CHECK(t.stats.inner + t.stats.leaves == t.nodes.size());
-        CHECK(same_box(t.bounds, t.nodes[0].box()));
-        std::size_t wrong_nodes = 0;  // boxes not tight, leaves above max_leaf, axes beyond 2
-        const int depth = check_node(t, 0, in, max_leaf, seen, wrong_nodes);
-        CHECK(wrong_nodes == 0);
-        CHECK(depth == t.stats.depth);
-        CHECK(depth <= max_depth);
-    }
-    CHECK(std::count(seen.begin(), seen.end(), 1) == std::ptrdiff_t(seen.size()));  // each primitive exactly once
 }
 
 }  // namespace
@@ -186,7 +140,7 @@ TEST_CASE("ch07 LBVH: every builder's tree is valid on scenes and degenerate inp
             INFO(name << ", " << to_string(p));
             lbvh_report r;
             const ch04::bvh t = build_lbvh(in.boxes, in.centroids, p, &r);
-            check_tree(t, in);
+            test::check_flat_bvh(t, in.boxes, in.centroids);
             CHECK(r.rebalanced == 0);
             if (name == "all centroids equal" || name == "a 1e30 outlier") {
                 CHECK(r.duplicate_codes + 1 >= mesh.triangle_count() - 1);
@@ -216,12 +170,12 @@ TEST_CASE("ch07 LBVH: deep codes stay within the depth bound, rebuilt by halving
         INFO(to_string(p));
         lbvh_report r;
         const ch04::bvh natural = build_lbvh(in.boxes, in.centroids, p, &r);
-        check_tree(natural, in);
+        test::check_flat_bvh(natural, in.boxes, in.centroids);
         CHECK(r.rebalanced == 0);
         if (p.bits_per_axis == 21) CHECK(natural.stats.depth >= 50);  // deeper than any median tree here
         p.max_depth = 40;
         const ch04::bvh bounded = build_lbvh(in.boxes, in.centroids, p, &r);
-        check_tree(bounded, in, p.max_leaf, 40);
+        test::check_flat_bvh(bounded, in.boxes, in.centroids, p.max_leaf, 40);
         CHECK(r.rebalanced >= (p.bits_per_axis == 21 ? 1u : 0u));
         const auto a = make_accel(p);
         a->build(mesh_only(m));
@@ -237,7 +191,7 @@ TEST_CASE("ch07 LBVH: the SAH collapse lowers the cost, and the tree is the same
         single.max_leaf = 1;
         const ch04::bvh collapsed = build_lbvh(in.boxes, in.centroids, p);
         const ch04::bvh singles = build_lbvh(in.boxes, in.centroids, single);
-        check_tree(singles, in, 1);
+        test::check_flat_bvh(singles, in.boxes, in.centroids, 1);
         CHECK(singles.stats.leaves == in.boxes.size());
         CHECK(collapsed.stats.leaves < in.boxes.size() * 3 / 4);
         CHECK(ch05::tree_cost(collapsed) < ch05::tree_cost(singles));

@@ -1,0 +1,247 @@
+// The index-form binary tree: its checks, its SAH cost, the LBVH that starts the restructuring builders,
+// and FLATTEN (SAH collapse, then chapter 04's depth-first nodes). Every walk here is iterative: a tree of
+// one primitive per leaf may be thousands of levels deep before the collapse bounds it.
+#include "strahl/ch08/binary_tree.hpp"
+#include "strahl/ch07/lbvh.hpp"
+#include "strahl/ch07/morton.hpp"
+#include "strahl/ch07/radix_sort.hpp"
+#include "strahl/ch07/radix_tree.hpp"
+#include "strahl/timer.hpp"
+#include <algorithm>
+#include <stdexcept>
+
+namespace strahl::ch08 {
+
+namespace {
+
+// The nodes of the tree below `root` in post-order (children before their parent).
+std::vector<std::uint32_t> post_order(const binary_tree& t, std::uint32_t root) {
+    std::vector<std::uint32_t> order, stack;
+    if (root == none) return order;
+    order.reserve(t.nodes.size());
+    stack.push_back(root);
+    while (!stack.empty()) {  // reverse of (node, right, left) pre-order is post-order
+        const std::uint32_t i = stack.back();
+        stack.pop_back();
+        order.push_back(i);
+        if (!t.nodes[i].is_leaf()) stack.push_back(t.nodes[i].left), stack.push_back(t.nodes[i].right);
+    }
+    std::reverse(order.begin(), order.end());
+    return order;
+}
+
+bool same_box(const aabb& a, const aabb& b) {
+    for (int k = 0; k < 3; ++k)
+        if (!(a.min[k] == b.min[k] && a.max[k] == b.max[k])) return false;
+    return true;
+}
+
+}  // namespace
+
+std::string check_tree(const binary_tree& t, std::span<const aabb> boxes) {
+    std::vector<std::uint8_t> seen(boxes.size(), 0);
+    for (const std::uint32_t id : t.loose) {
+        if (id >= boxes.size() || seen[id]) return "loose id " + std::to_string(id) + " out of range or twice";
+        seen[id] = 1;
+    }
+    if (t.root == none) return t.nodes.empty() && t.loose.size() == boxes.size() ? "" : "no root, but nodes or primitives";
+    if (t.root >= t.nodes.size() || t.nodes[t.root].parent != none) return "the root is out of range or has a parent";
+    if (t.nodes.size() % 2 == 0) return "an even number of nodes: not a full binary tree";
+    std::vector<std::uint8_t> visited(t.nodes.size(), 0);
+    std::size_t leaves = 0;
+    for (const std::uint32_t i : post_order(t, t.root)) {
+        if (i >= t.nodes.size() || visited[i]++) return "node " + std::to_string(i) + " out of range or reached twice";
+        const tree_node& n = t.nodes[i];
+        if (n.is_leaf()) {
+            if (n.right != none) return "leaf " + std::to_string(i) + " has a right child";
+            if (n.prim >= boxes.size() || seen[n.prim]) return "leaf " + std::to_string(i) + ": primitive out of range or twice";
+            seen[n.prim] = 1, ++leaves;
+            if (!same_box(n.box, boxes[n.prim])) return "leaf " + std::to_string(i) + ": box is not its primitive's";
+            continue;
+        }
+        if (n.right == none || n.prim != none) return "inner node " + std::to_string(i) + " malformed";
+        if (n.left >= t.nodes.size() || n.right >= t.nodes.size()) return "inner node " + std::to_string(i) + ": child out of range";
+        if (t.nodes[n.left].parent != i || t.nodes[n.right].parent != i)
+            return "inner node " + std::to_string(i) + ": a child's parent link is not it";
+        if (!same_box(n.box, unite(t.nodes[n.left].box, t.nodes[n.right].box)))
+            return "inner node " + std::to_string(i) + ": box is not the union of its children's";
+    }
+    if (std::find(visited.begin(), visited.end(), 0) != visited.end()) return "nodes not reachable from the root";
+    if (leaves + t.loose.size() != boxes.size()) return "not every primitive is in the tree or loose";
+    return "";
+}
+
+double binary_sah_cost(const binary_tree& t, const ch05::sah_costs& c) {
+    if (t.root == none) return 0.0;
+    const double root_area = t.nodes[t.root].box.surface_area();
+    double sum = 0.0;
+    for (const tree_node& n : t.nodes) {
+        const double ratio = root_area > 0.0 ? double(n.box.surface_area()) / root_area : 1.0;
+        sum += (n.is_leaf() ? c.intersection : c.traversal) * ratio;
+    }
+    return sum;
+}
+
+void refit(binary_tree& t) {
+    for (const std::uint32_t i : post_order(t, t.root)) {
+        tree_node& n = t.nodes[i];
+        if (!n.is_leaf()) n.box = unite(t.nodes[n.left].box, t.nodes[n.right].box);
+    }
+}
+
+binary_tree lbvh_binary_tree(std::span<const aabb> boxes, std::span<const vec3> centroids, int bits_per_axis) {
+    if (boxes.size() != centroids.size()) throw std::invalid_argument("lbvh_binary_tree: one centroid per box");
+    binary_tree t;
+    ch07::morton_codes codes = ch07::compute_morton_codes(boxes, centroids, bits_per_axis);
+    ch07::radix_sort_params sort;
+    sort.key_bits = 3 * bits_per_axis;
+    ch07::radix_sort(codes.keys, codes.ids, sort);
+    t.loose = std::move(codes.loose);
+    const std::size_t n = codes.ids.size();
+    if (n == 0) return t;
+    // Leaves first (0..n-1, in Morton order), then the radix tree's inner nodes (n..2n-2).
+    t.nodes.resize(2 * n - 1);
+    for (std::size_t k = 0; k < n; ++k) t.nodes[k].prim = codes.ids[k], t.nodes[k].box = boxes[codes.ids[k]];
+    if (n == 1) {
+        t.root = 0;
+        return t;
+    }
+    ch07::radix_tree r;
+    ch07::build_radix_tree_karras(codes.keys, r);
+    const auto node_of = [&](std::uint32_t ref) {
+        return ch07::is_leaf_ref(ref) ? (ref & ~ch07::leaf_bit) : std::uint32_t(n) + ref;
+    };
+    for (std::uint32_t i = 0; i + 1 < n; ++i) {
+        tree_node& in = t.nodes[n + i];
+        in.left = node_of(r.left[i]), in.right = node_of(r.right[i]);
+        t.nodes[in.left].parent = std::uint32_t(n) + i, t.nodes[in.right].parent = std::uint32_t(n) + i;
+    }
+    t.root = std::uint32_t(n);  // inner node 0
+    t.nodes[t.root].parent = none;
+    refit(t);
+    return t;
+}
+
+ch04::bvh flatten(const binary_tree& t, const flatten_params& params) {
+    flatten_params p = params;
+    p.max_leaf = std::clamp(p.max_leaf, 1, 255);
+    p.max_depth = std::clamp(p.max_depth, 33, ch04::bvh_max_depth);
+    const timer clock;
+    ch04::bvh out;
+    out.loose = t.loose;
+    out.stats.primitives = t.leaves() * (t.root != none) + t.loose.size();
+    if (t.root == none) return out;
+
+    // 1. Bottom up: each subtree's primitive count, SAH cost (areas, not ratios), whether it becomes one
+    //    leaf, and its height as written (a collapsed subtree is a leaf: 0).
+    const std::size_t m = t.nodes.size();
+    std::vector<std::uint32_t> count(m, 1);
+    std::vector<float> cost(m, 0.0f);
+    std::vector<std::uint8_t> as_leaf(m, 1);
+    std::vector<std::uint32_t> height(m, 0);
+    const std::vector<std::uint32_t> order = post_order(t, t.root);
+    for (const std::uint32_t i : order) {
+        const tree_node& n = t.nodes[i];
+        const float area = n.box.surface_area();
+        if (n.is_leaf()) {
+            cost[i] = p.costs.intersection * area;
+            continue;
+        }
+        count[i] = count[n.left] + count[n.right];
+        const float split = p.costs.traversal * area + cost[n.left] + cost[n.right];
+        const float leaf = p.costs.intersection * float(count[i]) * area;
+        as_leaf[i] = count[i] <= std::uint32_t(p.max_leaf) && leaf <= split;
+        cost[i] = as_leaf[i] ? leaf : split;
+        height[i] = as_leaf[i] ? 0 : 1 + std::max(height[n.left], height[n.right]);
+    }
+
+    // 2. Depth first, left child next, into the flat array. A collapsed subtree's primitives go to
+    //    prim_ids in tree order. At depth max_depth - 32 a subtree that would reach below max_depth is
+    //    written by halving its primitives (in tree order) instead.
+    out.nodes.reserve(2 * count[t.root] - 1);
+    out.prim_ids.reserve(count[t.root]);
+    const auto push = [&](const aabb& box, int depth) {
+        ch04::bvh_node node{};
+        for (int a = 0; a < 3; ++a) node.bmin[a] = box.min[a], node.bmax[a] = box.max[a];
+        out.nodes.push_back(node);
+        out.stats.depth = std::max(out.stats.depth, depth);
+        return std::uint32_t(out.nodes.size() - 1);
+    };
+    const auto make_leaf = [&](std::uint32_t index, std::uint32_t first, std::uint32_t n) {
+        out.nodes[index].offset = first, out.nodes[index].count = std::uint16_t(n);
+        ++out.stats.leaves;
+        out.stats.max_leaf = std::max<std::size_t>(out.stats.max_leaf, n);
+    };
+    const auto gather = [&](std::uint32_t sub) {  // the subtree's primitives, in tree order, into prim_ids
+        std::vector<std::uint32_t> stack{sub};
+        while (!stack.empty()) {
+            const tree_node& n = t.nodes[stack.back()];
+            stack.pop_back();
+            if (n.is_leaf()) out.prim_ids.push_back(n.prim);
+            else stack.push_back(n.right), stack.push_back(n.left);
+        }
+    };
+    // A work item: write node `node` (or, halving, prim_ids [first, first + n)) at depth, and when it is a
+    // right child, tell its parent's node where it landed.
+    struct item {
+        std::uint32_t node;        // tree node, or none when halving a range
+        std::uint32_t first, n;    // the range of prim_ids when halving
+        int depth;
+        std::uint32_t parent_slot; // the flat parent whose offset this right child sets, or none
+    };
+    std::vector<item> stack{{t.root, 0, 0, 0, none}};
+    std::vector<std::uint32_t> halve_ids;
+    while (!stack.empty()) {
+        const item w = stack.back();
+        stack.pop_back();
+        if (w.node == none) {  // halving: the range's box, a leaf, or two halves
+            aabb box;
+            for (std::uint32_t k = w.first; k < w.first + w.n; ++k) box.grow(t.nodes[halve_ids[k]].box);
+            const std::uint32_t index = push(box, w.depth);
+            if (w.parent_slot != none) out.nodes[w.parent_slot].offset = index;
+            if (w.n <= std::uint32_t(p.max_leaf)) {
+                make_leaf(index, std::uint32_t(out.prim_ids.size()), w.n);
+                for (std::uint32_t k = w.first; k < w.first + w.n; ++k) out.prim_ids.push_back(t.nodes[halve_ids[k]].prim);
+                continue;
+            }
+            const std::uint32_t half = w.n / 2;
+            out.nodes[index].axis = std::uint8_t(box.largest_axis());
+            ++out.stats.inner;
+            stack.push_back({none, w.first + half, w.n - half, w.depth + 1, index});
+            stack.push_back({none, w.first, half, w.depth + 1, none});
+            continue;
+        }
+        const tree_node& n = t.nodes[w.node];
+        if (!n.is_leaf() && !as_leaf[w.node] && w.depth == p.max_depth - 32 &&
+            w.depth + int(height[w.node]) > p.max_depth) {
+            // Too deep: its leaves (tree nodes holding one primitive each), in tree order, halved.
+            const std::uint32_t first = std::uint32_t(halve_ids.size());
+            std::vector<std::uint32_t> s{w.node};
+            while (!s.empty()) {
+                const tree_node& x = t.nodes[s.back()];
+                const std::uint32_t xi = s.back();
+                s.pop_back();
+                if (x.is_leaf()) halve_ids.push_back(xi);
+                else s.push_back(x.right), s.push_back(x.left);
+            }
+            stack.push_back({none, first, std::uint32_t(halve_ids.size()) - first, w.depth, w.parent_slot});
+            continue;
+        }
+        const std::uint32_t index = push(n.box, w.depth);
+        if (w.parent_slot != none) out.nodes[w.parent_slot].offset = index;
+        if (n.is_leaf() || as_leaf[w.node]) {
+            make_leaf(index, std::uint32_t(out.prim_ids.size()), count[w.node]);
+            gather(w.node);
+            continue;
+        }
+        out.nodes[index].axis = std::uint8_t(n.box.largest_axis());
+        ++out.stats.inner;
+        stack.push_back({n.right, 0, 0, w.depth + 1, index});  // after the whole left subtree
+        stack.push_back({n.left, 0, 0, w.depth + 1, none});     // next: index + 1
+    }
+    out.bounds = out.nodes[0].box();
+    out.stats.build_ms = clock.milliseconds();
+    return out;
+}
+
+}  // namespace strahl::ch08
