@@ -45,6 +45,8 @@ struct collapser {
     lbvh_report& report;
     std::vector<float> cost;
     std::vector<std::uint8_t> as_leaf, height;
+    std::vector<std::uint32_t> size;      // nodes the subtree is written as (a collapsed one: 1)
+    std::vector<std::uint16_t> max_leaf;  // the largest leaf written below
 
     const aabb& box_of(std::uint32_t ref) const {
         return is_leaf_ref(ref) ? leaf_boxes[ref & ~leaf_bit] : inner_boxes[ref];
@@ -53,11 +55,14 @@ struct collapser {
         return is_leaf_ref(ref) ? p.costs.intersection * leaf_boxes[ref & ~leaf_bit].surface_area() : cost[ref];
     }
     int height_of(std::uint32_t ref) const { return is_leaf_ref(ref) ? 0 : height[ref]; }
+    std::uint32_t size_of(std::uint32_t ref) const { return is_leaf_ref(ref) ? 1 : size[ref]; }
+    std::uint16_t max_leaf_of(std::uint32_t ref) const { return is_leaf_ref(ref) ? 1 : max_leaf[ref]; }
 
     // 1. Bottom up: as it stands, C_T * A + the children's costs; as a leaf, C_I * N * A (N <= max_leaf).
     void price() {
         const std::size_t inner = t.left.size();
         cost.assign(inner, 0.0f), as_leaf.assign(inner, 0), height.assign(inner, 0);
+        size.assign(inner, 1), max_leaf.assign(inner, 1);
         bottom_up(t, [&](std::uint32_t i) {
             const float area = inner_boxes[i].surface_area();
             const std::uint32_t n = t.last[i] - t.first[i] + 1;
@@ -65,7 +70,9 @@ struct collapser {
             const float leaf = p.costs.intersection * float(n) * area;
             as_leaf[i] = n <= std::uint32_t(p.max_leaf) && leaf <= split;
             cost[i] = as_leaf[i] ? leaf : split;
-            height[i] = as_leaf[i] ? 0 : std::uint8_t(1 + std::max(height_of(t.left[i]), height_of(t.right[i])));
+            height[i] = as_leaf[i] ? 0 : std::uint8_t(std::min(255, 1 + std::max(height_of(t.left[i]), height_of(t.right[i]))));
+            size[i] = as_leaf[i] ? 1 : 1 + size_of(t.left[i]) + size_of(t.right[i]);
+            max_leaf[i] = as_leaf[i] ? std::uint16_t(n) : std::max(max_leaf_of(t.left[i]), max_leaf_of(t.right[i]));
         });
     }
 
@@ -86,6 +93,42 @@ struct collapser {
         out.nodes[index].offset = right;
         out.nodes[index].axis = std::uint8_t(out.nodes[index].box().largest_axis());
         ++out.stats.inner;
+    }
+
+    // 2'. Where no subtree reaches below max_depth, every subtree's place in the array is known from the
+    //     sizes: the left child at index + 1, the right one after the left subtree's size(left) nodes. Large
+    //     subtrees are then written in parallel, the two children of a node as two tasks.
+    void write(std::uint32_t ref, std::uint32_t index) {
+        ch04::bvh_node& node = out.nodes[index];
+        const aabb& box = box_of(ref);
+        for (int a = 0; a < 3; ++a) node.bmin[a] = box.min[a], node.bmax[a] = box.max[a];
+        if (is_leaf_ref(ref)) {
+            node.offset = ref & ~leaf_bit, node.count = 1;
+            return;
+        }
+        if (as_leaf[ref]) {
+            node.offset = t.first[ref], node.count = std::uint16_t(t.last[ref] - t.first[ref] + 1);
+            return;
+        }
+        const std::uint32_t right = index + 1 + size_of(t.left[ref]);
+        node.offset = right;
+        node.axis = std::uint8_t(box.largest_axis());
+        if (size[ref] >= 8192)
+            parallel_invoke([&] { write(t.left[ref], index + 1); }, [&] { write(t.right[ref], right); });
+        else
+            write(t.left[ref], index + 1), write(t.right[ref], right);
+    }
+    // The whole tree by write(), with chapter 04's statistics from the sizes; false (nothing written) where
+    // a subtree would reach below max_depth, for emit() to handle.
+    bool write_all(std::uint32_t root) {
+        if (height_of(root) > p.max_depth) return false;
+        out.nodes.resize(size_of(root));
+        write(root, 0);
+        out.stats.depth = height_of(root);
+        out.stats.leaves = (out.nodes.size() + 1) / 2;
+        out.stats.inner = out.nodes.size() - out.stats.leaves;
+        out.stats.max_leaf = max_leaf_of(root);
+        return true;
     }
 
     // 2. Depth first, left child next. At depth max_depth - 32 a subtree that would reach below max_depth
@@ -195,9 +238,10 @@ ch04::bvh build_lbvh(std::span<const aabb> boxes, std::span<const vec3> centroid
     // 5. Collapse: the SAH's leaves, written depth first into the flat array.
     if (!codes.ids.empty()) {
         out.nodes.reserve(2 * codes.ids.size() - 1);
-        collapser c{tree, leaf_boxes, inner_boxes, p, out, r, {}, {}, {}};
+        collapser c{tree, leaf_boxes, inner_boxes, p, out, r, {}, {}, {}, {}, {}};
         c.price();
-        c.emit(codes.ids.size() == 1 ? leaf_bit : 0u, 0);
+        const std::uint32_t root = codes.ids.size() == 1 ? leaf_bit : 0u;
+        if (!c.write_all(root)) c.emit(root, 0);
         out.bounds = out.nodes[0].box();
     }
     out.prim_ids = std::move(codes.ids);

@@ -3,7 +3,9 @@
 #include "strahl/ch07/morton.hpp"
 #include "strahl/ch04/bvh.hpp"
 #include "strahl/parallel.hpp"
+#include <algorithm>
 #include <stdexcept>
+#include <vector>
 
 namespace strahl::ch07 {
 
@@ -33,16 +35,31 @@ morton_codes compute_morton_codes(std::span<const aabb> boxes, std::span<const v
     if (bits_per_axis != 10 && bits_per_axis != 21)
         throw std::invalid_argument("compute_morton_codes: 10 or 21 bits per axis");
     morton_codes out;
-    // 1. The primitives a tree can hold (the others are loose, as in chapter 04), and their centroids' box.
-    out.ids.reserve(boxes.size());
-    for (std::size_t i = 0; i < boxes.size(); ++i) {
-        if (ch04::fits_in_tree(boxes[i], centroids[i])) {
-            out.ids.push_back(std::uint32_t(i));
-            out.centroid_box.grow(centroids[i]);
-        } else {
-            out.loose.push_back(std::uint32_t(i));
+    // 1. The primitives a tree can hold (the others are loose, as in chapter 04), and their centroids' box:
+    //    per fixed chunk in parallel (how many fit, their box), then each chunk's ids written from the
+    //    prefix sum of those counts, so ids and loose keep input order on any number of threads.
+    const std::size_t n = boxes.size(), chunk = 16384, chunks = (n + chunk - 1) / chunk;
+    std::vector<std::size_t> fits(chunks + 1, 0);
+    std::vector<aabb> chunk_box(chunks);
+    parallel_for_chunks(chunks, 1, [&](std::size_t c0, std::size_t c1) {
+        for (std::size_t c = c0; c < c1; ++c)
+            for (std::size_t i = c * chunk; i < std::min(n, (c + 1) * chunk); ++i)
+                if (ch04::fits_in_tree(boxes[i], centroids[i])) ++fits[c + 1], chunk_box[c].grow(centroids[i]);
+    });
+    for (std::size_t c = 0; c < chunks; ++c) fits[c + 1] += fits[c], out.centroid_box.grow(chunk_box[c]);
+    out.ids.resize(fits[chunks]);
+    out.loose.resize(n - fits[chunks]);
+    parallel_for_chunks(chunks, 1, [&](std::size_t c0, std::size_t c1) {
+        for (std::size_t c = c0; c < c1; ++c) {
+            if (fits[chunks] == n) {  // all fit (the usual case): ids are 0..n-1
+                for (std::size_t i = c * chunk; i < std::min(n, (c + 1) * chunk); ++i) out.ids[i] = std::uint32_t(i);
+                continue;
+            }
+            std::size_t in = fits[c], loose = c * chunk - fits[c];
+            for (std::size_t i = c * chunk; i < std::min(n, (c + 1) * chunk); ++i)
+                (ch04::fits_in_tree(boxes[i], centroids[i]) ? out.ids[in++] : out.loose[loose++]) = std::uint32_t(i);
         }
-    }
+    });
     // 2. One code per primitive, in parallel.
     out.keys.resize(out.ids.size());
     const quantizer q(out.centroid_box, bits_per_axis);
