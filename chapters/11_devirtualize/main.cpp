@@ -12,6 +12,7 @@
 #include "strahl/plot.hpp"
 #include "strahl/procedural.hpp"
 #include "strahl/program.hpp"
+#include "strahl/race_csv.hpp"
 #include "strahl/timer.hpp"
 #include <algorithm>
 #include <cstdio>
@@ -176,11 +177,6 @@ void write_staircase(const std::vector<step_row>& steps, const fs::path& svg, co
 // --from-race: the race's medians across processes (race.csv of race --processes N), its ch11 rows and,
 // where present, ch13-bvh16 and embree-medium beside them. Closest-hit speed for primary and diffuse rays,
 // any-hit speed for shadow rays.
-const char* const race_header = "scene,triangles,structure,chapter,exact,rays,ray_count,build_ms,memory_bytes,sah_cost,"
-                                "closest_mrays_s,closest_runs,closest_vs_embree,closest_box_per_ray,closest_prim_per_ray,"
-                                "closest_nodes_per_ray,closest_differing,any_mrays_s,any_runs,any_vs_embree,"
-                                "any_box_per_ray,any_prim_per_ray,any_differing";
-
 std::vector<step_row> read_race(const fs::path& csv) {
     std::vector<step_row> rows;
     const auto find = [&](const std::string& scene, const std::string& step) -> step_row& {
@@ -188,17 +184,14 @@ std::vector<step_row> read_race(const fs::path& csv) {
             if (r.scene == scene && r.step == step) return r;
         return rows.emplace_back(step_row{scene, step});
     };
-    for (const csv_row& r : read_csv(csv, race_header, "a race.csv written by the race (chapter 16)")) {
-        const std::string& structure = r.cells[2];
-        const std::string& kind = r.cells[5];
+    for (const race_csv_row& r : read_race_csv(csv)) {
+        const std::string& structure = r.structure;
         const bool wanted = structure.rfind("ch11-", 0) == 0 || structure == "ch13-bvh16" || structure == "embree-medium";
         if (!wanted) continue;
-        std::string scene = r.cells[0];
-        scene = scene.substr(0, scene.find('.'));
-        step_row& row = find(scene, structure.rfind("ch11-", 0) == 0 ? structure.substr(5) : structure);
-        if (kind == "primary") row.primary = csv_number(csv, r, 10);
-        else if (kind == "diffuse") row.diffuse = csv_number(csv, r, 10);
-        else if (kind == "shadow") row.shadow = csv_number(csv, r, 17);
+        step_row& row = find(r.scene, structure.rfind("ch11-", 0) == 0 ? structure.substr(5) : structure);
+        if (r.rays == "primary") row.primary = r.closest_mrays_s;
+        else if (r.rays == "diffuse") row.diffuse = r.closest_mrays_s;
+        else if (r.rays == "shadow") row.shadow = r.any_mrays_s;
     }
     if (rows.empty() || rows.front().step != "virtual")
         throw std::runtime_error(csv.string() + ": no ch11-virtual rows first: race with --accels ch11-virtual,...");

@@ -1,6 +1,7 @@
 // The race's results: one row per scene, structure and ray set, printed as a table and written as CSV,
 // Markdown and SVG plots.
 #pragma once
+#include "strahl/race_csv.hpp"
 #include "strahl/race/measure.hpp"
 #include <filesystem>
 #include <iosfwd>
@@ -27,11 +28,8 @@ struct race_row {
 void add_embree_ratios(std::vector<race_row>& rows);
 
 void print_table(std::ostream& out, const std::vector<race_row>& rows);
-// race.csv's first line: its columns.
-inline constexpr const char* race_csv_header =
-    "scene,triangles,structure,chapter,exact,rays,ray_count,build_ms,memory_bytes,sah_cost,"
-    "closest_mrays_s,closest_runs,closest_vs_embree,closest_box_per_ray,closest_prim_per_ray,closest_nodes_per_ray,"
-    "closest_differing,any_mrays_s,any_runs,any_vs_embree,any_box_per_ray,any_prim_per_ray,any_differing";
+// race.csv's first line: strahl::race_csv_header (strahl/race_csv.hpp), which the chapters read back.
+using strahl::race_csv_header;
 std::string to_csv(const std::vector<race_row>& rows);
 // processes > 1: the rows are medians across that many processes (race --processes), and the text says so.
 std::string to_markdown(const std::vector<race_row>& rows, const std::string& machine, int processes = 1);
