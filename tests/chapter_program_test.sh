@@ -38,7 +38,7 @@ case $nn in
         teapot_stadium_planes.png)
     sized=(teapot.png:"64 48") ;;
 04) args=(--quick --width 64 --out "$out") files=(teapot.png teapot_box_tests.png teapot_stadium.png
-        teapot_stadium_box_tests.png)
+        teapot_stadium_box_tests.png runs.csv)
     sized=(teapot.png:"64 48") ;;
 05) args=(--quick --width 48 --repeats 1 --out "$out") files=(bins.csv build_vs_trace.svg bins_vs_sah.svg
         stadium_box_tests.png)

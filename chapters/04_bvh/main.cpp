@@ -1,8 +1,8 @@
 // ch04: the BVH. Builds chapter 04's BVH (object median and spatial median) over the teapot, the teapot in
 // a stadium and the shared bunny for both primitive sets, renders primary rays through it, and prints per
-// build: nodes, leaves, depth, memory, build time, box and triangle tests per ray, Mrays/s. Draws the
-// lecture's picture of the AABB problem: box tests per pixel as a heat map (rays grazing the surface pay
-// most), with the boxes of chosen levels drawn over it.
+// build: nodes, leaves, depth, memory, build time, box and triangle tests per ray, Mrays/s, and writes that
+// table as runs.csv. Draws the lecture's picture of the AABB problem: box tests per pixel as a heat map
+// (rays grazing the surface pay most), with the boxes of chosen levels drawn over it.
 #include "strahl/ch02/accel.hpp"
 #include "strahl/ch03/accel.hpp"
 #include "strahl/ch04/accel.hpp"
@@ -67,7 +67,16 @@ image box_test_picture(const bvh& t, const camera& cam, const primary_trace& r, 
     return heat;
 }
 
-void run_scene(const scene& s, const options& o) {
+// runs.csv: a row per scene, split and primitive set, the table the program prints. Columns: scene,
+// triangles, width and height (primary rays), split (median: object median; spatial), set (triangles or
+// virtual), nodes, leaves, depth, memory_bytes (nodes and index array) and the same in KiB and MiB,
+// build_ms, nodes, box and triangle tests per ray, mrays_per_s (one timed run on all threads), and
+// speed_vs_triangles: this row's Mrays/s over the same split's triangles row (1 for that row).
+const char* const runs_header =
+    "scene,triangles,width,height,split,set,nodes,leaves,depth,memory_bytes,memory_kib,memory_mib,build_ms,"
+    "nodes_per_ray,box_tests_per_ray,prim_tests_per_ray,mrays_per_s,speed_vs_triangles";
+
+void run_scene(const scene& s, const options& o, std::ostream& csv) {
     const camera cam(s.camera, o.width, o.height);
     const fs::path render_path = o.folder / (s.name + ".png"), heat_path = o.folder / (s.name + "_box_tests.png");
     prepare_output(render_path, o.user_named, o.force);
@@ -76,7 +85,8 @@ void run_scene(const scene& s, const options& o) {
                 o.height);
     std::printf("  %-8s %-9s %8s %5s %9s %9s %10s %9s %9s %8s\n", "split", "set", "nodes", "depth", "memory",
                 "build ms", "nodes/ray", "boxes/ray", "tris/ray", "Mrays/s");
-    for (const split_method m : {split_method::object_median, split_method::spatial_median})
+    for (const split_method m : {split_method::object_median, split_method::spatial_median}) {
+        double triangles_mrays = 0.0;
         for (const bool is_virtual : {false, true}) {
             bvh_build_params p;
             p.split = m;
@@ -90,10 +100,20 @@ void run_scene(const scene& s, const options& o) {
                         double(t.memory_bytes()) / 1024.0, t.stats.build_ms, r.counts.per_ray(r.counts.nodes_visited),
                         r.counts.per_ray(r.counts.box_tests), r.counts.per_ray(r.counts.prim_tests),
                         rays / r.seconds * 1e-6);
+            const double mrays = rays / r.seconds * 1e-6;
+            if (!is_virtual) triangles_mrays = mrays;
+            csv << s.name << ',' << s.mesh.triangle_count() << ',' << o.width << ',' << o.height << ','
+                << to_string(m) << ',' << (is_virtual ? "virtual" : "triangles") << ',' << t.nodes.size() << ','
+                << t.stats.leaves << ',' << t.stats.depth << ',' << t.memory_bytes() << ','
+                << double(t.memory_bytes()) / 1024.0 << ',' << double(t.memory_bytes()) / (1024.0 * 1024.0) << ','
+                << t.stats.build_ms << ',' << r.counts.per_ray(r.counts.nodes_visited) << ','
+                << r.counts.per_ray(r.counts.box_tests) << ',' << r.counts.per_ray(r.counts.prim_tests) << ','
+                << mrays << ',' << mrays / triangles_mrays << '\n';
             if (is_virtual || m != split_method::object_median) continue;
             write_image(render_path, shade(s, cam, r.hits));
             write_image(heat_path, box_test_picture(t, cam, r, o));
         }
+    }
     std::printf("  memory: nodes (32 bytes) + index array (4 bytes per triangle); at most 2N - 1 nodes\n");
     std::printf("  wrote    %s, %s\n", render_path.string().c_str(), heat_path.string().c_str());
 }
@@ -160,7 +180,7 @@ int run(int argc, const char* const* argv) {
         .option("height", "N", "", "image height, 1..16384 (default 3/4 of the width)")
         .option("levels", "A-B", "2-3", "draw the boxes of the nodes at depths A to B (the root is depth 0)")
         .option("threads", "N", "0", "worker threads, 0..1024 (0: one per core)")
-        .option("out", "DIR", "", "write the images into DIR/ (default out/04_bvh/)")
+        .option("out", "DIR", "", "write the images and runs.csv into DIR/ (default out/04_bvh/)")
         .flag("force", "replace existing files in a folder named with --out")
         .flag("quick", "smaller images and only the built-in scenes")
         .flag("sweep", "measure instead how the grid, the k-d tree and the BVH scale with the triangle count "
@@ -199,10 +219,16 @@ int run(int argc, const char* const* argv) {
     const std::string which = args.get("scene");
     if (which != "all" && which != "teapot" && which != "stadium" && which != "bunny")
         throw usage_error("--scene must be teapot, stadium, bunny or all, not '" + which + "'");
-    if (which == "all" || which == "teapot") run_scene(builtin_scene("teapot"), o);
-    if (which == "all" || which == "stadium") run_scene(builtin_scene("teapot_stadium"), o);
+    const fs::path runs_path = o.folder / "runs.csv";
+    prepare_output(runs_path, o.user_named, o.force);
+    std::ofstream runs(runs_path);
+    runs << runs_header << '\n';
+    if (which == "all" || which == "teapot") run_scene(builtin_scene("teapot"), o, runs);
+    if (which == "all" || which == "stadium") run_scene(builtin_scene("teapot_stadium"), o, runs);
     if ((which == "all" && !quick) || which == "bunny")
-        if (const auto s = load_shared_mesh("bunny.ply", "bunny")) run_scene(*s, o);
+        if (const auto s = load_shared_mesh("bunny.ply", "bunny")) run_scene(*s, o, runs);
+    runs.close();
+    std::printf("wrote %s\n", runs_path.string().c_str());
     std::printf("against the grid, the k-d tree and Embree, on the same rays:\n"
                 "  build/release/bin/race --quick --accels brute,ch02-grid,ch03-kd,ch04-median,ch04-spatial,"
                 "embree-medium\n");
