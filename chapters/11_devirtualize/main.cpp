@@ -184,7 +184,7 @@ std::vector<step_row> read_race(const fs::path& csv) {
             if (r.scene == scene && r.step == step) return r;
         return rows.emplace_back(step_row{scene, step});
     };
-    for (const race_csv_row& r : read_race_csv(csv)) {
+    for (const race_csv_row& r : read_race_rows(csv)) {
         const std::string& structure = r.structure;
         const bool wanted = structure.rfind("ch11-", 0) == 0 || structure == "ch13-bvh16" || structure == "embree-medium";
         if (!wanted) continue;

@@ -3,7 +3,7 @@
 
 namespace strahl {
 
-std::vector<race_csv_row> read_race_csv(const std::filesystem::path& file) {
+std::vector<race_csv_row> read_race_rows(const std::filesystem::path& file) {
     std::vector<race_csv_row> rows;
     for (const csv_row& c : read_csv(file, race_csv_header, "a race.csv written by the race (chapter 16)")) {
         const auto number = [&](std::size_t k) { return c.cells[k].empty() ? 0.0 : csv_number(file, c, k); };

@@ -26,6 +26,6 @@ struct race_csv_row {
 
 // Reads a race.csv (a race's own, or the medians of race --processes N); throws std::runtime_error naming
 // the file and line where it is not one.
-std::vector<race_csv_row> read_race_csv(const std::filesystem::path& file);
+std::vector<race_csv_row> read_race_rows(const std::filesystem::path& file);
 
 }  // namespace strahl
