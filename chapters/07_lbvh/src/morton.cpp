@@ -42,9 +42,13 @@ morton_codes compute_morton_codes(std::span<const aabb> boxes, std::span<const v
     std::vector<std::size_t> fits(chunks + 1, 0);
     std::vector<aabb> chunk_box(chunks);
     parallel_for_chunks(chunks, 1, [&](std::size_t c0, std::size_t c1) {
-        for (std::size_t c = c0; c < c1; ++c)
+        for (std::size_t c = c0; c < c1; ++c) {
+            std::size_t count = 0;  // in registers, stored once (neighbouring chunks share cache lines)
+            aabb box;
             for (std::size_t i = c * chunk; i < std::min(n, (c + 1) * chunk); ++i)
-                if (ch04::fits_in_tree(boxes[i], centroids[i])) ++fits[c + 1], chunk_box[c].grow(centroids[i]);
+                if (ch04::fits_in_tree(boxes[i], centroids[i])) ++count, box.grow(centroids[i]);
+            fits[c + 1] = count, chunk_box[c] = box;
+        }
     });
     for (std::size_t c = 0; c < chunks; ++c) fits[c + 1] += fits[c], out.centroid_box.grow(chunk_box[c]);
     out.ids.resize(fits[chunks]);

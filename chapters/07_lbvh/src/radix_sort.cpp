@@ -50,8 +50,10 @@ void radix_sort_parallel(std::span<std::uint64_t> keys, std::span<std::uint32_t>
     check(keys, ids, p);
     const std::size_t n = keys.size();
     if (n < 2) return;
-    // Fixed chunks of about 2^15 pairs (at most 256 of them): the same cut whatever the thread count.
-    const std::size_t chunks = std::clamp<std::size_t>((n + 32767) / 32768, 1, 256);
+    // Fixed chunks of about 2^13 pairs (at most 256 of them): the same cut whatever the thread count, and
+    // enough chunks for the threads to share evenly (3 chunks on 2 threads would leave one idle a third of
+    // the time).
+    const std::size_t chunks = std::clamp<std::size_t>((n + 8191) / 8192, 1, 256);
     const std::size_t chunk = (n + chunks - 1) / chunks;
     const std::size_t buckets = std::size_t(1) << p.digit_bits;
     std::vector<std::uint32_t> offsets(chunks * buckets);  // row c: chunk c's counts, then its first positions
