@@ -49,7 +49,7 @@ std::unique_ptr<ch04::bvh_accel_base> lbvh_flattened() {
 
 }  // namespace
 
-TEST_CASE("ch08 binary tree: chapter 07's LBVH is a valid binary tree; the check finds broken ones", "[ch08]") {
+TEST_CASE("ch08 binary tree: chapter 07's LBVH is a valid binary tree, and the check finds broken ones", "[ch08]") {
     for (const triangle_mesh& m : {teapot_scene(3).mesh, random_soup(3000, 4, 0.05f), triangle_mesh{},
                                    test::copies(1, vec3(0), vec3(1, 0, 0), vec3(0, 1, 0)),
                                    test::copies(700, vec3(0), vec3(1, 0, 0), vec3(0, 1, 0))}) {
