@@ -6,8 +6,10 @@
 #include "strahl/ch07/morton.hpp"
 #include "strahl/ch07/radix_sort.hpp"
 #include "strahl/ch07/radix_tree.hpp"
+#include "strahl/parallel.hpp"
 #include "strahl/timer.hpp"
 #include <algorithm>
+#include <atomic>
 #include <stdexcept>
 
 namespace strahl::ch08 {
@@ -133,26 +135,83 @@ ch04::bvh flatten(const binary_tree& t, const flatten_params& params) {
     if (t.root == none) return out;
 
     // 1. Bottom up: each subtree's primitive count, SAH cost (areas, not ratios), whether it becomes one
-    //    leaf, and its height as written (a collapsed subtree is a leaf: 0).
+    //    leaf, its height as written (a collapsed subtree is a leaf: 0), its size in flat nodes and the
+    //    largest leaf below. In parallel: a task per leaf climbs towards the root; at each inner node the
+    //    first of its two children to arrive stops, the second prices the node and climbs on (chapter 07's
+    //    bottom-up pass, with the parent links).
     const std::size_t m = t.nodes.size();
-    std::vector<std::uint32_t> count(m, 1);
+    std::vector<std::uint32_t> count(m, 1), height(m, 0), size(m, 1), largest(m, 1);
     std::vector<float> cost(m, 0.0f);
     std::vector<std::uint8_t> as_leaf(m, 1);
-    std::vector<std::uint32_t> height(m, 0);
-    const std::vector<std::uint32_t> order = post_order(t, t.root);
-    for (const std::uint32_t i : order) {
+    std::vector<std::uint32_t> arrivals(m, 0);
+    const auto price = [&](std::uint32_t i) {
         const tree_node& n = t.nodes[i];
         const float area = n.box.surface_area();
-        if (n.is_leaf()) {
-            cost[i] = p.costs.intersection * area;
-            continue;
-        }
         count[i] = count[n.left] + count[n.right];
         const float split = p.costs.traversal * area + cost[n.left] + cost[n.right];
         const float leaf = p.costs.intersection * float(count[i]) * area;
         as_leaf[i] = count[i] <= std::uint32_t(p.max_leaf) && leaf <= split;
         cost[i] = as_leaf[i] ? leaf : split;
         height[i] = as_leaf[i] ? 0 : 1 + std::max(height[n.left], height[n.right]);
+        size[i] = as_leaf[i] ? 1 : 1 + size[n.left] + size[n.right];
+        largest[i] = as_leaf[i] ? count[i] : std::max(largest[n.left], largest[n.right]);
+    };
+    parallel_for_chunks(m, 2048, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t k = begin; k < end; ++k) {
+            if (!t.nodes[k].is_leaf()) continue;
+            cost[k] = p.costs.intersection * t.nodes[k].box.surface_area();
+            for (std::uint32_t i = t.nodes[k].parent; i != none; i = t.nodes[i].parent) {
+                if (std::atomic_ref<std::uint32_t>(arrivals[i]).fetch_add(1, std::memory_order_acq_rel) == 0) break;
+                price(i);
+            }
+        }
+    });
+
+    // 2'. Where no subtree reaches below max_depth, every subtree's place is known from the sizes: the left
+    //     child at index + 1, the right after the left subtree's nodes, and its primitives after the left
+    //     subtree's in prim_ids. Large subtrees are written in parallel, a node's two children as two tasks.
+    if (height[t.root] <= std::uint32_t(p.max_depth)) {
+        out.nodes.resize(size[t.root]);
+        out.prim_ids.resize(count[t.root]);
+        struct writer {
+            const binary_tree& t;
+            const std::vector<std::uint32_t>& count;
+            const std::vector<std::uint32_t>& size;
+            const std::vector<std::uint8_t>& as_leaf;
+            ch04::bvh& out;
+            void write(std::uint32_t i, std::uint32_t index, std::uint32_t first) const {
+                const tree_node& n = t.nodes[i];
+                ch04::bvh_node& node = out.nodes[index];
+                for (int a = 0; a < 3; ++a) node.bmin[a] = n.box.min[a], node.bmax[a] = n.box.max[a];
+                if (n.is_leaf() || as_leaf[i]) {
+                    node.offset = first, node.count = std::uint16_t(count[i]);
+                    std::uint32_t stack[256], top = 0, k = first;  // a collapsed subtree: at most 255 leaves
+                    stack[top++] = i;
+                    while (top > 0) {
+                        const tree_node& x = t.nodes[stack[--top]];
+                        if (x.is_leaf()) out.prim_ids[k++] = x.prim;
+                        else stack[top++] = x.right, stack[top++] = x.left;
+                    }
+                    return;
+                }
+                const std::uint32_t right = index + 1 + size[n.left];
+                node.offset = right;
+                node.axis = std::uint8_t(n.box.largest_axis());
+                const std::uint32_t right_first = first + count[n.left];
+                if (size[i] >= 8192)
+                    parallel_invoke([&] { write(n.left, index + 1, first); }, [&] { write(n.right, right, right_first); });
+                else
+                    write(n.left, index + 1, first), write(n.right, right, right_first);
+            }
+        };
+        writer{t, count, size, as_leaf, out}.write(t.root, 0, 0);
+        out.stats.depth = int(height[t.root]);
+        out.stats.leaves = (out.nodes.size() + 1) / 2;
+        out.stats.inner = out.nodes.size() - out.stats.leaves;
+        out.stats.max_leaf = largest[t.root];
+        out.bounds = out.nodes[0].box();
+        out.stats.build_ms = clock.milliseconds();
+        return out;
     }
 
     // 2. Depth first, left child next, into the flat array. A collapsed subtree's primitives go to
