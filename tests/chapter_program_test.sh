@@ -48,6 +48,8 @@ case $nn in
 07) args=(--quick --width 32 --out "$out") files=(build_phases.csv quality.csv sort.csv scaling.csv phases.svg
                                                      build_vs_trace.svg sort.svg)
     sized=() ;;
+08) args=(--quick --width 32 --out "$out") files=(builders.csv)
+    sized=() ;;
 11) args=(--quick --width 32 --out "$out") files=(steps.csv render.csv staircase.svg render.png)
     sized=(render.png:"32 32") ;;
 13) args=(--quick --width 32 --repeats 1 --out "$out") files=(wide.csv speedup.svg)
@@ -276,6 +278,19 @@ if [[ $nn == 07 ]]; then
     runs "--replot of a folder without the CSVs" 2 "$program" --replot "$dir/empty" --out "$dir/replot7"
     contains "$dir/err" "--replot: no" "--replot of a folder without the CSVs"
     [[ ! -e $dir/replot7 ]] || fail "--replot of a folder without the CSVs made its output folder"
+fi
+
+# Chapter 08 draws the Pareto plot from a race's table (--from-race CSV): pareto.csv and pareto.svg, the
+# frontier marked; a file that is no race.csv is refused before any folder is made.
+if [[ $nn == 08 ]]; then
+    race_csv=$(dirname "$0")/../slides/img/16_race/race_meshes.csv
+    runs "--from-race" 0 "$program" --from-race "$race_csv" --out "$dir/pareto"
+    [[ -s $dir/pareto/pareto.svg ]] || fail "--from-race: no pareto.svg"
+    [[ $(awk -F, '$7 == 1' "$dir/pareto/pareto.csv" | wc -l) -ge 4 ]] || fail "--from-race: fewer than 4 frontier points"
+    printf 'scene,structure\nx,y\n' >"$dir/notrace.csv"
+    runs "--from-race of a foreign file" 1 "$program" --from-race "$dir/notrace.csv" --out "$dir/pareto2"
+    contains "$dir/err" "is not a race.csv" "--from-race of a foreign file"
+    [[ ! -e $dir/pareto2 ]] || fail "--from-race of a foreign file made its output folder"
 fi
 
 # Chapters 03 to 06 draw their figures (--diagrams DIR): whole SVG files in a folder made for them, not

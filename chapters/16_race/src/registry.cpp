@@ -7,7 +7,9 @@
 #include "strahl/ch04/accel.hpp"
 #include "strahl/ch05/accel.hpp"
 #include "strahl/ch06/accel.hpp"
+#include <algorithm>
 #include "strahl/ch07/accel.hpp"
+#include "strahl/ch08/accel.hpp"
 #include "strahl/ch11/steps.hpp"
 #include "strahl/ch13/accel.hpp"
 #include "strahl/ch15/accel.hpp"
@@ -124,6 +126,13 @@ std::vector<accel_entry> registered_accels(const registry_options& o) {
          [] { return ch15::make_brute(ch15::test_kind::watertight); }, true, "brute-watertight"},
         // Later chapters register here, one line each.
     };
+    // Chapter 08, its builders in variants()' order, after chapter 07's (the table keeps chapter order).
+    const auto after07 = std::find_if(list.rbegin(), list.rend(), [](const accel_entry& e) { return e.chapter == "07"; }).base();
+    std::vector<accel_entry> ch08_entries;
+    for (const ch08::variant& v : ch08::variants())
+        ch08_entries.push_back({"ch08-" + v.name + "-fast", "08", v.description + "; chapter 05's fast walk",
+                                [v] { return std::unique_ptr<accel>(ch08::make_accel(v)); }});
+    list.insert(after07, ch08_entries.begin(), ch08_entries.end());
     if (embree_available()) {
         using q = embree_config::quality;
         list.push_back({"embree-low", "--", "Embree 3, low build quality (its Morton-code build), rtcIntersect1/rtcOccluded1",

@@ -1,0 +1,28 @@
+// The build/trace trade, measured by the race: per scene and ray set, every BVH builder of chapters 04 to
+// 08 and Embree's three qualities as points (build time, trace time), and the Pareto frontier: the
+// structures that no other both builds and traces faster than. The time a ray set takes, not rays per
+// second, so that "lower is better" holds on both axes.
+#pragma once
+#include "strahl/race_csv.hpp"
+#include <string>
+#include <vector>
+
+namespace strahl::ch08 {
+
+struct pareto_point {
+    std::string scene, rays, structure, chapter;
+    double build_ms = 0, trace_ms = 0;  // trace_ms: the ray set's closest-hit time on one thread
+    bool on_frontier = false;
+};
+
+// The points of a race's rows (primary and diffuse rays; chapters 04-08 and embree-low/medium/high), the
+// frontier marked: in order of build time, a point is on it when it traces faster than every point that
+// builds faster.
+std::vector<pareto_point> pareto_points(const std::vector<race_csv_row>& rows);
+
+// pareto.csv (scene,rays,structure,chapter,build_ms,trace_ms,on_frontier) and pareto.svg (one panel per
+// scene and ray set, log-log, a colour per chapter, the frontier dashed and its points named).
+std::string pareto_csv(const std::vector<pareto_point>& points);
+std::string pareto_svg(const std::vector<pareto_point>& points);
+
+}  // namespace strahl::ch08
