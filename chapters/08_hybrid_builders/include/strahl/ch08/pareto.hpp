@@ -1,5 +1,5 @@
-// The build/trace trade, measured by the race: per scene and ray set, every BVH builder of chapters 04 to
-// 08 and Embree's three qualities as points (build time, trace time), and the Pareto frontier: the
+// The build/trace trade, measured by the race: per scene and ray set, every BVH builder of chapters 05 to
+// 08 walked by chapter 05's fast traversal (the rows *-fast) and Embree's three qualities as points (build time, trace time), and the Pareto frontier: the
 // structures that no other both builds and traces faster than. The time a ray set takes, not rays per
 // second, so that "lower is better" holds on both axes.
 #pragma once
@@ -15,7 +15,8 @@ struct pareto_point {
     bool on_frontier = false;
 };
 
-// The points of a race's rows (primary and diffuse rays; chapters 04-08 and embree-low/medium/high), the
+// The points of a race's rows (primary and diffuse rays; chapters 05-08's *-fast rows and
+// embree-low/medium/high), the
 // frontier marked: in order of build time, a point is on it when it traces faster than every point that
 // builds faster.
 std::vector<pareto_point> pareto_points(const std::vector<race_csv_row>& rows);
