@@ -35,7 +35,7 @@ case $nn in
         scenes.csv insertion.csv lambda_sweep.csv lambda_sweep.svg histogram.svg histogram.csv)
     sized=(teapot.png:"64 48") ;;
 03) args=(--quick --width 64 --out "$out") files=(teapot.png teapot_planes.png teapot_stadium.png
-        teapot_stadium_planes.png)
+        teapot_stadium_planes.png runs.csv)
     sized=(teapot.png:"64 48") ;;
 04) args=(--quick --width 64 --out "$out") files=(teapot.png teapot_box_tests.png teapot_stadium.png
         teapot_stadium_box_tests.png runs.csv)

@@ -1,7 +1,8 @@
 // ch03: the k-d tree. Builds chapter 03's SAH k-d tree over the teapot, the teapot in a stadium and the
 // shared bunny (Sponza with --sponza) for both primitive sets, renders primary rays through it (shaded by
 // facing ratio), draws the first levels' split planes over the render, and prints per set: nodes, leaves,
-// depth, references per triangle, memory, build time, SAH cost, nodes and triangles tested per ray, Mrays/s.
+// depth, references per triangle, memory, build time, SAH cost, nodes and triangles tested per ray, Mrays/s,
+// and writes that table as runs.csv.
 #include "strahl/ch03/accel.hpp"
 #include "strahl/display.hpp"
 #include "strahl/image.hpp"
@@ -9,7 +10,9 @@
 #include "strahl/procedural.hpp"
 #include "strahl/primary_trace.hpp"
 #include "strahl/program.hpp"
+#include <algorithm>
 #include <cstdio>
+#include <fstream>
 #include <iostream>
 
 namespace strahl::ch03 {
@@ -56,7 +59,17 @@ std::vector<line_segment> plane_lines(const kd_tree& tree, int levels) {
     return lines;
 }
 
-void run_scene(const scene& s, const options& o) {
+// runs.csv: a row per scene and primitive set, the table the program prints. Columns: scene, triangles,
+// width and height (primary rays), set (triangles or virtual), nodes, leaves, depth, refs_per_tri
+// (references per triangle), memory_bytes (8-byte nodes and 4-byte references) and the same in KiB and
+// MiB, build_ms, sah (the tree's SAH cost), nodes and triangle tests per ray, hit_percent (the share of
+// primary rays that hit a triangle), mrays_per_s (one timed run on all threads), and speed_vs_triangles:
+// this row's Mrays/s over the scene's triangles row (1 for that row).
+const char* const runs_header =
+    "scene,triangles,width,height,set,nodes,leaves,depth,refs_per_tri,memory_bytes,memory_kib,memory_mib,build_ms,"
+    "sah,nodes_per_ray,prim_tests_per_ray,hit_percent,mrays_per_s,speed_vs_triangles";
+
+void run_scene(const scene& s, const options& o, std::ostream& csv) {
     const camera cam(s.camera, o.width, o.height);
     const fs::path render_path = o.folder / (s.name + ".png"), planes_path = o.folder / (s.name + "_planes.png");
     prepare_output(render_path, o.user_named, o.force);
@@ -65,6 +78,7 @@ void run_scene(const scene& s, const options& o) {
                 o.height);
     std::printf("  %-9s %8s %8s %5s %9s %9s %9s %6s %10s %10s %8s\n", "set", "nodes", "leaves", "depth",
                 "refs/tri", "memory", "build ms", "SAH", "nodes/ray", "tris/ray", "Mrays/s");
+    double triangles_mrays = 0.0;
     for (const bool is_virtual : {false, true}) {
         const auto a = make_kd_accel(is_virtual);
         a->build(s);
@@ -76,6 +90,16 @@ void run_scene(const scene& s, const options& o) {
                     t.stats.refs_per_prim(), double(t.memory_bytes()) / 1024.0, t.stats.build_ms, t.sah_cost(),
                     r.counts.per_ray(r.counts.nodes_visited), r.counts.per_ray(r.counts.prim_tests),
                     rays / r.seconds * 1e-6);
+        const double mrays = rays / r.seconds * 1e-6;
+        if (!is_virtual) triangles_mrays = mrays;
+        const double hits = double(std::count_if(r.hits.begin(), r.hits.end(), [](const hit& h) { return h.found(); }));
+        csv << s.name << ',' << s.mesh.triangle_count() << ',' << o.width << ',' << o.height << ','
+            << (is_virtual ? "virtual" : "triangles") << ',' << t.nodes.size() << ',' << t.stats.leaves << ','
+            << t.stats.depth << ',' << t.stats.refs_per_prim() << ',' << t.memory_bytes() << ','
+            << double(t.memory_bytes()) / 1024.0 << ',' << double(t.memory_bytes()) / (1024.0 * 1024.0) << ','
+            << t.stats.build_ms << ',' << t.sah_cost() << ',' << r.counts.per_ray(r.counts.nodes_visited) << ','
+            << r.counts.per_ray(r.counts.prim_tests) << ',' << 100.0 * hits / std::max(1.0, rays) << ',' << mrays
+            << ',' << mrays / triangles_mrays << '\n';
         if (is_virtual) continue;
         // The picture: the render, then the same with the first levels' planes drawn over it.
         image img = shade(s, cam, r.hits);
@@ -99,7 +123,7 @@ int run(int argc, const char* const* argv) {
         .option("height", "N", "", "image height, 1..16384 (default 3/4 of the width)")
         .option("levels", "N", "4", "draw the split planes of this many levels")
         .option("threads", "N", "0", "worker threads, 0..1024 (0: one per core)")
-        .option("out", "DIR", "", "write the images into DIR/ (default out/03_kd_tree/)")
+        .option("out", "DIR", "", "write the images and runs.csv into DIR/ (default out/03_kd_tree/)")
         .flag("force", "replace existing files in a folder named with --out")
         .flag("sponza", "with --scene all: also Sponza (262k triangles, a build of seconds)")
         .flag("quick", "smaller images and only the built-in scenes")
@@ -129,13 +153,19 @@ int run(int argc, const char* const* argv) {
     const std::string which = args.get("scene");
     if (which != "all" && which != "teapot" && which != "stadium" && which != "bunny" && which != "sponza")
         throw usage_error("--scene must be teapot, stadium, bunny, sponza or all, not '" + which + "'");
+    const fs::path runs_path = o.folder / "runs.csv";
+    prepare_output(runs_path, o.user_named, o.force);
+    std::ofstream runs(runs_path);
+    runs << runs_header << '\n';
     const auto shared = [&](const char* file, const char* name) {
-        if (const auto s = load_shared_mesh(file, name)) run_scene(*s, o);
+        if (const auto s = load_shared_mesh(file, name)) run_scene(*s, o, runs);
     };
-    if (which == "all" || which == "teapot") run_scene(builtin_scene("teapot"), o);
-    if (which == "all" || which == "stadium") run_scene(builtin_scene("teapot_stadium"), o);
+    if (which == "all" || which == "teapot") run_scene(builtin_scene("teapot"), o, runs);
+    if (which == "all" || which == "stadium") run_scene(builtin_scene("teapot_stadium"), o, runs);
     if ((which == "all" && !quick) || which == "bunny") shared("bunny.ply", "bunny");
     if ((which == "all" && args.has("sponza") && !quick) || which == "sponza") shared("sponza.obj", "sponza");
+    runs.close();
+    std::printf("wrote %s\n", runs_path.string().c_str());
     std::printf("against the uniform grid (chapter 02) and Embree, on the same rays:\n"
                 "  build/release/bin/race --quick --accels brute,ch02-grid,ch03-kd,ch03-kd-virtual,embree-medium\n");
     return 0;

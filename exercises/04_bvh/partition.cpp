@@ -5,13 +5,15 @@
 
 namespace strahl::ch04 {
 
-// See bvh.hpp. In short, for the node's range ids (2 or more primitive ids):
-//   1. the box around the centroids of ids; axis = its largest_axis();
-//   2. all centroids equal on that axis (max == min): mid = n / 2, nothing moved;
-//   3. spatial median: std::partition ids by centroid[axis] < (min + max) / 2 of the centroid box;
-//      mid = size of the first part; if that is 0 or n, fall through to the object median;
-//   4. object median: mid = n / 2, std::nth_element over ids by (centroid[axis], id).
-// Returns {axis, mid}. No copies: ids is reordered in place.
+// Goal: split the node's range ids (2 or more primitive ids) in place for BUILD-HIERARCHY: choose the longest
+// axis of the box around the range's centroids, reorder ids so that the left child's primitives come first,
+// and return {axis, mid} with 0 < mid < ids.size() always (bvh.hpp has the full contract: object median,
+// spatial median with its fall-back, all centroids equal).
+// Hint: std::nth_element and std::partition reorder a range in place; compare by (centroid[axis], id) so that
+// equal centroids still have one order.
+// Why: why must a split never leave one side empty, and why does splitting equal centroids in half keep the
+// tree's depth at log2 of the count?
+// Step by step: README.md, Hints 04.2.
 split_result partition_split(std::span<std::uint32_t> ids, std::span<const vec3> centroids, split_method m) {
     STRAHL_TODO("04.2 partition");
 }

@@ -6,16 +6,14 @@
 
 namespace strahl::ch04 {
 
-// Does the ray org + t d meet the closed box for some t in [tmin, tmax]? (inv_dir = 1 / d.)
-//   start with the interval [t0, t1] = [tmin, tmax];
-//   per axis a: near = (box.min[a] - org[a]) * inv_dir[a], far = (box.max[a] - org[a]) * inv_dir[a];
-//     if either is NaN (0 * inf: the origin lies on that plane and d[a] is +0 or -0, so the ray runs in the
-//     plane, inside the closed slab for every t), skip this axis;
-//     swap them if near > far;
-//     widen the exit toward +inf (later): far *= 1 + 2 * gamma(3) if far > 0, else 1 - 2 * gamma(3) (a
-//     negative exit moves toward zero; +-inf stay);
-//     t0 = max(t0, near); t1 = min(t1, far);
-//     miss as soon as t0 > t1.
+// Goal: whether the ray org + t d (inv_dir = 1 / d) meets the closed box for some t in [tmin, tmax], never
+// missing a box the exact ray touches: intersect the three slabs' [entry, exit] intervals with [tmin, tmax],
+// the exit widened by pbrt's factor 1 + 2 gamma(3) (traverse.hpp has the full contract, +0, -0 and NaN).
+// Hint: (box.min[a] - org[a]) * inv_dir[a] is NaN only when the origin lies on that plane and d[a] is a zero:
+// the ray then runs inside the closed slab, so the axis can be skipped.
+// Why: the exit is widened, not the entry; why is widening one side enough, and why must a negative exit
+// move towards zero to be widened?
+// Step by step: README.md, Hints 04.1.
 bool slab_test(const aabb& box, const vec3& org, const vec3& inv_dir, float tmin, float tmax) {
     STRAHL_TODO("04.1 slab test");
 }
