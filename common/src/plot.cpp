@@ -202,8 +202,9 @@ std::string to_svg(const plot& p, int width, int height) {
             const double x = g.left + ax.unit(s.x[i]) * (g.right - g.left);
             const double y = g.bottom - ay.unit(s.y[i]) * (g.bottom - g.top);
             path += (path.empty() ? "M" : " L") + std::to_string(x) + " " + std::to_string(y);
-            dots += "<circle cx=\"" + std::to_string(x) + "\" cy=\"" + std::to_string(y) + "\" r=\"3.5\" fill=\"" +
-                    palette[colour % 10] + "\"/>\n";
+            if (s.markers)
+                dots += "<circle cx=\"" + std::to_string(x) + "\" cy=\"" + std::to_string(y) + "\" r=\"3.5\" fill=\"" +
+                        palette[colour % 10] + "\"/>\n";
             if (i < s.point_labels.size() && !s.point_labels[i].empty())
                 labelled.push_back({x, y}), texts.push_back(s.point_labels[i]);
             else

@@ -94,13 +94,13 @@ std::string pareto_svg(const std::vector<pareto_point>& points) {
         std::sort(front.begin(), front.end(), [](const pareto_point* a, const pareto_point* b) { return a->build_ms < b->build_ms; });
         plot_series stair{"the course's frontier", {}, {}, true, {}, 8};
         stair.dashed = true;
+        stair.markers = false;  // its corners are not points; the frontier's points are drawn in their colours
         stair.in_legend = k == 0;
         for (std::size_t i = 0; i < front.size(); ++i) {
             if (i > 0) stair.x.push_back(front[i]->build_ms), stair.y.push_back(front[i - 1]->trace_ms);
             stair.x.push_back(front[i]->build_ms), stair.y.push_back(front[i]->trace_ms);
         }
         if (!stair.x.empty()) pl.series.insert(pl.series.begin(), stair);  // under the points
-        // (Its points are the frontier's own: drawn again in their chapter's colour on top.)
         out.push_back(pl);
     }
     if (out.empty()) throw std::runtime_error("no *-fast rows of chapters 05 to 08 and no Embree rows with primary or diffuse rays to plot");

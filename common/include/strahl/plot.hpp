@@ -17,6 +17,7 @@ struct plot_series {
     int color = -1;                    // palette index; -1: the series' own index
     bool dashed = false;               // draw the line dashed
     bool in_legend = true;             // false: a companion series (more points in another's colour), unlisted
+    bool markers = true;               // a dot at each point (false: a line series drawn as the line alone)
 };
 
 struct plot {
