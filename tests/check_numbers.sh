@@ -8,14 +8,15 @@
 #
 # Convention. An HTML comment on the line(s) before a Markdown table declares where its numbers come from:
 #
-#     <!-- numbers: slides/img/05_sah/bins.csv [more.csv ...] [labels: N] [derived: percent(A,B)] -->
+#     <!-- numbers: slides/img/05_sah/bins.csv [more.csv ...] [labels: N] [derived: percent(A,B)]
+#          [join: A+B] [columns: rows|any] -->
 #     | scene | tree | build ms | ...
 #     |---|---|---|
 #
 # Paths are relative to the repository root. Blank lines may separate the comment from the table, and a
 # table may have several such comments (their sources add up); a numbers comment that no table follows is
 # an error. A source is a CSV (every field that is a number counts) or a Markdown table a program wrote
-# (the race's *_spread.md: every number in its table rows counts).
+# (the race's *_spread.md: every number in its table body rows counts).
 #
 # What is checked: every number in the body rows of an annotated table (below the header and the |---|
 # line) must equal some number of its sources at the precision it is written with: the source's value,
@@ -34,14 +35,40 @@
 # B may be a constant, for a unit: ratio(memory_bytes,1024) is KiB. Several: derived: percent(A,B), ratio(C,D).
 # Nothing else is derived: a ratio of two rows, a difference or a sum is not checked,
 # and a table holding one stays unannotated.
-# The check is by value, not by place: a number found anywhere in the sources passes. It catches a typo, a
-# stale figure or a wrong rounding, not a right value copied into the wrong cell. A median of an odd
-# number of processes is one of their values, so it passes against the per-process CSV.
+# The token check is by value: a number found anywhere in the sources passes it. It catches a typo, a
+# stale figure or a wrong rounding. A median of an odd number of processes is one of their values, so it
+# passes against the per-process CSV.
+#
+# The column rule catches a right value in the wrong cell. A table column's numbers are split by their
+# place in the cell: its sub-column k holds the k-th number of each of its cells (in "82.72 (81.52 to
+# 87.69)" 82.72 is number 1, 81.52 number 2, 87.69 number 3; a cell with one number has only number 1).
+# Each sub-column of each checked column (outside the label columns) must be held, every one of its
+# numbers (those the token check found), at the precision written, by ONE source column:
+#   - a column of one CSV source (its header names it),
+#   - a derivation named in derived: over one CSV source (ratio(A,B) of its rows; percent(A,B), for
+#     numbers written with '%'),
+#   - in a Markdown source, number k of the cells of one column of one of its tables (the spread's
+#     "18.866 (17.673 to 19.741)" gives three source columns: medians, smallest, largest),
+#   - a join declared in the comment (below).
+# Which source column may differ from one table column, or sub-column, to the next. Three words in the
+# numbers comment adjust the rule for one table, and only where its layout needs it:
+#   join: A+B[+C...][, D+E...]  the named columns of a CSV source count as one source column (a table
+#       column whose shadow-ray rows are any-hit figures: join: closest_mrays_s+any_mrays_s; a memory
+#       column in KiB and MiB: join: memory_kib+memory_mib). Each name must be a column of a source.
+#   columns: rows  a transposed table (one quantity per row, a parameter per column): the rule holds
+#       for each body row instead of each column.
+#   columns: any   opts the table out of the column rule (the token check stays): for a table that mixes
+#       quantities within its columns and rows (a last row of Mrays/s below ratio rows). Use sparingly.
+# The keywords labels:, derived:, join: and columns: follow the sources.
 #
 # Output: FILE:LINE: token 'X' not found in CSV(s) ... for each number that matches nothing (with the
-# nearest value of the sources), and a summary: N tables checked, M numbers, K unannotated tables with
-# numbers (in a column that is not the first), which --list names. Exit 1 on any mismatch, a missing
-# source or a numbers comment that annotates no table; 0 otherwise.
+# nearest value of the sources); FILE:LINE: column 'HEADER' [(number k of its cells)]: no single source
+# column holds all its numbers (best: the source column that holds most of them, how many; misses: the
+# tokens it lacks, with their lines), LINE being the table's header (under columns: rows, "row 'LABEL'"
+# and the row's line); and a summary: N tables checked, M numbers, C sub-columns each held by one source
+# column, tables opted out, K unannotated tables with numbers (in a column that is not the first), which
+# --list names. Exit 1 on any mismatch, a column the rule rejects, a missing source or a numbers comment
+# that annotates no table; 0 otherwise.
 set -euo pipefail
 
 list=0
@@ -138,27 +165,57 @@ function tokenize(s,   n, i, j, c, p, pp, start, sign, d, e, tok, num, ntok, k) 
 function is_number(f) { return f ~ /^[-+]?([0-9]+[.]?[0-9]*|[.][0-9]+)([eE][-+]?[0-9]+)?$/ }
 
 # load(path): read a source once: its numbers into VAL[path, 1..NVAL[path]], a CSV's rows into
-# CELL[path, row, column] with COLS[path, name] the column of each header name.
-function load(path,   line, nf, f, i, row, ismd, hdr, n) {
+# CELL[path, row, column] with COLS[path, name] the column of each header name, and its source columns
+# (for the column rule) into SCV[id, 1..SCN[id]]: one per CSV column, one per number position of each
+# column of each table of a Markdown source; PCOLS[path] lists their ids.
+function load(path,   line, nf, f, i, row, ismd, hdr, n, tbl, ncell, cell, c, p, id, hcell, h) {
     if (path in LOADED) return LOADED[path]
     if ((getline line < path) < 0) { LOADED[path] = 0; return 0 }
     close(path)
     LOADED[path] = 1
     ismd = (path ~ /[.]md$/)
     NVAL[path] = 0
+    PCOLS[path] = ""
     row = 0
+    tbl = 0
     while ((getline line < path) > 0) {
         sub(/\r$/, "", line)
         if (ismd) {
-            if (line !~ /^[ \t]*[|]/ || line ~ /^[ \t]*[|][-:| \t]*$/) { hdr = 0; continue }
-            if (!hdr) { hdr = 1; continue }   # a table's header row
+            if (line !~ /^[ \t]*[|]/) { hdr = 0; continue }
+            if (line ~ /^[ \t]*[|][-:| \t]*$/) continue   # the |---| line, between a header and its rows
+            if (!hdr) {   # a table's header row
+                hdr = 1
+                tbl++
+                header_cells(line, hcell)
+                for (c in hcell) MDHDR[path, tbl, c] = trim(hcell[c])
+                continue
+            }
             n = tokenize(line)
             for (i = 1; i <= n; i++) VAL[path, ++NVAL[path]] = TV[i]
+            ncell = split_cells(line, cell)
+            for (c = 1; c <= ncell; c++) {
+                n = tokenize(cell[c])
+                for (p = 1; p <= n; p++) {
+                    if (!((path, tbl, c, p) in MDCOL)) {
+                        id = new_column(path, "", 0)
+                        h = MDHDR[path, tbl, c]
+                        SCNAME[id] = path " table " tbl " column '" h "'" (p > 1 ? " number " p : "")
+                        MDCOL[path, tbl, c, p] = id
+                    }
+                    id = MDCOL[path, tbl, c, p]
+                    SCV[id, ++SCN[id]] = TV[p]
+                }
+            }
             continue
         }
         nf = split(line, f, ",")
         if (row == 0) {
-            for (i = 1; i <= nf; i++) COLS[path, f[i]] = i
+            for (i = 1; i <= nf; i++) {
+                COLS[path, f[i]] = i
+                CSVCOL[path, i] = new_column(path, "", 0)
+                SCNAME[CSVCOL[path, i]] = path " column '" f[i] "'"
+            }
+            NCOL[path] = nf
             row = 1
             continue
         }
@@ -167,11 +224,89 @@ function load(path,   line, nf, f, i, row, ismd, hdr, n) {
             if (!is_number(f[i])) continue
             VAL[path, ++NVAL[path]] = f[i] + 0
             CELL[path, row, i] = f[i] + 0
+            if ((path, i) in CSVCOL) { id = CSVCOL[path, i]; SCV[id, ++SCN[id]] = f[i] + 0 }
         }
     }
     NROW[path] = row
     close(path)
     return 1
+}
+
+# new_column(path, name, pct): a new source column of path (pct: it holds percentages, matched by a
+# token written with '%' only); its id.
+function new_column(path, name, pct,   id) {
+    id = ++NSC
+    SCN[id] = 0
+    SCNAME[id] = name
+    SCPCT[id] = pct
+    PCOLS[path] = PCOLS[path] " " id
+    return id
+}
+
+# derived_column(t, path): the source column of derivation t (DKIND, DA, DB) over path's rows, built once;
+# 0 where path lacks one of its columns.
+function derived_column(t, path,   dk, id, a, b, r, x, y) {
+    dk = DKIND[t] SUBSEP DA[t] SUBSEP DB[t] SUBSEP path
+    if (dk in DERCOL) return DERCOL[dk]
+    DERCOL[dk] = 0
+    if (path ~ /[.]md$/ || !((path, DA[t]) in COLS) || !(is_number(DB[t]) || (path, DB[t]) in COLS)) return 0
+    id = ++NSC
+    SCN[id] = 0
+    SCNAME[id] = DKIND[t] "(" DA[t] "," DB[t] ") of " path
+    SCPCT[id] = (DKIND[t] == "percent")
+    a = COLS[path, DA[t]]; b = is_number(DB[t]) ? 0 : COLS[path, DB[t]]
+    for (r = 2; r <= NROW[path]; r++) {
+        if (!((path, r, a) in CELL) || !(b == 0 || (path, r, b) in CELL)) continue
+        x = CELL[path, r, a]; y = (b == 0) ? DB[t] + 0 : CELL[path, r, b]
+        if (DKIND[t] == "percent") {
+            if (x == 0) continue
+            SCV[id, ++SCN[id]] = 100 * (y / x - 1)
+        } else {
+            if (y == 0) continue
+            SCV[id, ++SCN[id]] = x / y
+        }
+    }
+    DERCOL[dk] = id
+    return id
+}
+
+# column_has(id, tok, v, u, d): source column id holds a value that, at the token's precision, is it.
+function column_has(id, tok, v, u, d,   i, k) {
+    if (SCPCT[id] && tok !~ /%$/) return 0
+    if (d >= 0) {
+        if (!((id, d) in CBUILT)) {
+            CBUILT[id, d] = 1
+            for (i = 1; i <= SCN[id]; i++) CKEYS[id, d, key(SCV[id, i], d)] = 1
+        }
+        if ((id, d, key(v, d)) in CKEYS) return 1
+    }
+    for (i = 1; i <= SCN[id]; i++)
+        if (close_enough(SCV[id, i], v, u)) return 1
+    return 0
+}
+
+function trim(s) { gsub(/^[ \t]+|[ \t]+$/, "", s); return s }
+
+# header_cells(line, cells): a header row's cell texts (backticks dropped), their number.
+function header_cells(line, cells,   s, n, c) {
+    s = line
+    gsub(/\\[|]/, "/", s)
+    gsub(/`/, "", s)
+    sub(/^[ \t]*[|]/, "", s)
+    sub(/[|][ \t]*$/, "", s)
+    n = split(s, cells, "|")
+    for (c = 1; c <= n; c++) cells[c] = trim(cells[c])
+    return n
+}
+
+# split_cells(line, cells): a table row's cells (code spans and escaped pipes blanked), their number.
+function split_cells(line, cells,   s) {
+    s = line
+    gsub(/`[^`]*`/, " ", s)      # code spans are names, not numbers
+    gsub(/\\[|]/, " ", s)
+    sub(/^[ \t]*[|]/, "", s)
+    sub(/[|][ \t]*$/, "", s)
+    return split(s, cells, "|")
 }
 
 function key(v, d,   k) {
@@ -253,6 +388,23 @@ function parse_annotation(line,   body, n, w, i, j, mode, m, spec) {
         if (w[i] == "") continue
         if (w[i] == "labels:") { mode = "labels"; continue }
         if (w[i] == "derived:") { mode = "derived"; continue }
+        if (w[i] == "columns:") { mode = "columns"; continue }
+        if (w[i] == "join:") { mode = "join"; continue }
+        if (mode == "columns") {
+            if (w[i] != "any" && w[i] != "rows") problem(F ":" FNR ": columns: expects any or rows, got '" w[i] "'")
+            P_COLMODE = w[i]; mode = "src"; continue
+        }
+        if (mode == "join") {
+            m = split(w[i], spec, ",")
+            for (j = 1; j <= m; j++) {
+                if (spec[j] !~ /^[^+]+([+][^+]+)+$/) {
+                    problem(F ":" FNR ": join: expects A+B[+C...], got '" spec[j] "'")
+                    continue
+                }
+                P_JOIN[++P_NJOIN] = spec[j]
+            }
+            continue
+        }
         if (mode == "labels") { P_LABELS = w[i] + 0; mode = "src"; continue }
         if (mode == "derived") {
             m = split(w[i], spec, ",")
@@ -278,7 +430,7 @@ function parse_annotation(line,   body, n, w, i, j, mode, m, spec) {
 
 function drop_pending() {
     if (PENDING) problem(F ":" P_LINE ": a numbers comment that annotates no table")
-    PENDING = 0; P_NSRC = 0; P_NDER = 0; P_LABELS = 1
+    PENDING = 0; P_NSRC = 0; P_NDER = 0; P_LABELS = 1; P_COLMODE = ""; P_NJOIN = 0
 }
 
 # start_table(): the table whose header is the previous line; its annotation is the pending one.
@@ -287,6 +439,9 @@ function start_table(   s, i) {
     TABLE_LINE = FNR - 1
     HEADER = PREV
     NSRC = 0; NDER = 0; LABELS = 1; TABLE_NUMBERS = 0
+    COLMODE = ""; NJOIN = 0; NG = 0; ROWS = 0; ANN_LINE = P_LINE
+    delete CTN; delete CTT; delete CTV; delete CTU; delete CTD; delete CTL; delete PMAX
+    delete GLINE; delete GN; delete GNAME
     ANNOTATED = PENDING
     if (PENDING) {
         TABLES++
@@ -301,11 +456,16 @@ function start_table(   s, i) {
         for (i = 1; i <= P_NDER; i++) { DKIND[i] = P_DKIND[i]; DA[i] = P_DA[i]; DB[i] = P_DB[i] }
         NDER = P_NDER
         LABELS = P_LABELS
+        COLMODE = P_COLMODE
+        for (i = 1; i <= P_NJOIN; i++) JOIN[i] = P_JOIN[i]
+        NJOIN = P_NJOIN
     }
-    PENDING = 0; P_NSRC = 0; P_NDER = 0; P_LABELS = 1
+    PENDING = 0; P_NSRC = 0; P_NDER = 0; P_LABELS = 1; P_COLMODE = ""; P_NJOIN = 0
 }
 
 function end_table() {
+    if (INTABLE && ANNOTATED && NSRC > 0 && COLMODE != "any") check_columns()
+    if (INTABLE && ANNOTATED && COLMODE == "any") OPTOUTS++
     if (INTABLE && !ANNOTATED && TABLE_NUMBERS > 0) {
         UNANNOTATED++
         UNLIST[UNANNOTATED] = F ":" TABLE_LINE ": " TABLE_NUMBERS " numbers: " HEADER
@@ -313,21 +473,115 @@ function end_table() {
     INTABLE = 0
 }
 
-function body_row(line,   s, n, cells, c, k, ntok) {
-    s = line
-    gsub(/`[^`]*`/, " ", s)      # code spans are names, not numbers
-    gsub(/\\[|]/, " ", s)
-    sub(/^[ \t]*[|]/, "", s)
-    sub(/[|][ \t]*$/, "", s)
-    n = split(s, cells, "|")
+function body_row(line,   n, cells, c, k, ntok, m, g, lab) {
+    n = split_cells(line, cells)
+    ROWS++
     for (c = LABELS + 1; c <= n; c++) {
         ntok = tokenize(cells[c])
         for (k = 1; k <= ntok; k++) {
             TABLE_NUMBERS++
             if (!ANNOTATED || NSRC == 0) continue
             NUMBERS++
-            if (!found(k))
+            if (!found(k)) {
                 problem(F ":" FNR ": token '" TOK[k] "' not found in CSV(s) " SRCLIST " (nearest: " NEAREST ")")
+                continue
+            }
+            # kept for the column rule: the k-th number of the cells of group g (a column, or a row)
+            g = (COLMODE == "rows") ? ROWS : c
+            if (!(g in GLINE)) {
+                GLINE[g] = (COLMODE == "rows") ? FNR : TABLE_LINE
+                GN[++NG] = g
+            }
+            m = ++CTN[g, k]
+            CTT[g, k, m] = TOK[k]; CTV[g, k, m] = TV[k]; CTU[g, k, m] = TU[k]; CTD[g, k, m] = TD[k]
+            CTL[g, k, m] = FNR
+            if (k > PMAX[g]) PMAX[g] = k
+        }
+    }
+    if (COLMODE == "rows" && (ROWS in GLINE)) {
+        lab = ""
+        for (c = 1; c <= LABELS && c <= n; c++) lab = lab (lab == "" ? "" : " ") trim(cells[c])
+        GNAME[ROWS] = (lab == "") ? "row " ROWS : lab
+    }
+}
+
+# candidates(): the table's source columns into CAND[1..NCAND]: every column of every source, the
+# declared derivations over each CSV source, and each join: group over each CSV source.
+function candidates(   s, path, ids, nid, j, id, jn, names, nn, i, jk, any, r, found_in) {
+    NCAND = 0
+    for (s = 1; s <= NSRC; s++) {
+        path = SRC[s]
+        nid = split(PCOLS[path], ids, " ")
+        for (j = 1; j <= nid; j++) CAND[++NCAND] = ids[j]
+        for (j = 1; j <= NDER; j++) {
+            id = derived_column(j, path)
+            if (id) CAND[++NCAND] = id
+        }
+    }
+    for (jn = 1; jn <= NJOIN; jn++) {
+        nn = split(JOIN[jn], names, "+")
+        for (i = 1; i <= nn; i++) found_in[i] = 0
+        for (s = 1; s <= NSRC; s++) {
+            path = SRC[s]
+            jk = JOIN[jn] SUBSEP path
+            if (!(jk in JOINCOL)) {
+                JOINCOL[jk] = 0
+                any = 0
+                for (i = 1; i <= nn; i++) if ((path, names[i]) in COLS) any = 1
+                if (any) {
+                    id = ++NSC
+                    SCN[id] = 0; SCPCT[id] = 0
+                    SCNAME[id] = path " columns " JOIN[jn] " (joined)"
+                    for (i = 1; i <= nn; i++) {
+                        if (!((path, names[i]) in COLS)) continue
+                        j = CSVCOL[path, COLS[path, names[i]]]
+                        for (r = 1; r <= SCN[j]; r++) SCV[id, ++SCN[id]] = SCV[j, r]
+                    }
+                    JOINCOL[jk] = id
+                }
+            }
+            if (JOINCOL[jk]) CAND[++NCAND] = JOINCOL[jk]
+            for (i = 1; i <= nn; i++) if ((path, names[i]) in COLS) found_in[i] = 1
+        }
+        for (i = 1; i <= nn; i++)
+            if (!found_in[i]) problem(F ":" ANN_LINE ": join: column '" names[i] "' is in none of the sources")
+    }
+}
+
+# check_columns(): the column rule over the table just ended: every sub-column (the k-th number of the
+# cells of one column; of one row under "columns: rows") must be held, all of it, by one source column.
+function check_columns(   hdr, nh, gi, g, k, m, j, id, cnt, best, bestcnt, miss, nmiss, name, n) {
+    nh = header_cells(HEADER, hdr)
+    candidates()
+    for (gi = 1; gi <= NG; gi++) {
+        g = GN[gi]
+        for (k = 1; k <= PMAX[g]; k++) {
+            n = CTN[g, k] + 0
+            if (n == 0) continue
+            SUBCOLUMNS++
+            best = 0; bestcnt = -1
+            for (j = 1; j <= NCAND; j++) {
+                id = CAND[j]
+                cnt = 0
+                for (m = 1; m <= n; m++)
+                    if (column_has(id, CTT[g, k, m], CTV[g, k, m], CTU[g, k, m], CTD[g, k, m])) cnt++
+                    else if (cnt + n - m <= bestcnt) break   # cannot beat the best any more
+                if (cnt > bestcnt) { best = id; bestcnt = cnt }
+                if (cnt == n) break
+            }
+            if (bestcnt == n) continue
+            if (COLMODE == "rows") name = "row '" GNAME[g] "'"
+            else name = "column '" ((g <= nh && hdr[g] != "") ? hdr[g] : "#" g) "'"
+            miss = ""; nmiss = 0
+            if (best)
+                for (m = 1; m <= n; m++) {
+                    if (column_has(best, CTT[g, k, m], CTV[g, k, m], CTU[g, k, m], CTD[g, k, m])) continue
+                    if (++nmiss <= 6) miss = miss (nmiss > 1 ? ", " : "") "'" CTT[g, k, m] "' (line " CTL[g, k, m] ")"
+                }
+            if (nmiss > 6) miss = miss " and " (nmiss - 6) " more"
+            problem(F ":" GLINE[g] ": " name (PMAX[g] > 1 ? " (number " k " of its cells)" : "") \
+                ": no single source column holds all its numbers" \
+                (best ? " (best: " SCNAME[best] ", " bestcnt " of " n "; misses " miss ")" : ""))
         }
     }
 }
@@ -336,7 +590,7 @@ FNR == 1 {
     if (NR > 1) { end_table(); drop_pending() }
     F = FILENAME
     INFENCE = 0; INTABLE = 0; PREVPIPE = 0; PREV = ""
-    PENDING = 0; P_NSRC = 0; P_NDER = 0; P_LABELS = 1
+    PENDING = 0; P_NSRC = 0; P_NDER = 0; P_LABELS = 1; P_COLMODE = ""; P_NJOIN = 0
 }
 { sub(/\r$/, "") }
 /^[ \t]*(```|~~~)/ {
@@ -359,8 +613,8 @@ END {
     end_table(); drop_pending()
     if (LIST)
         for (i = 1; i <= UNANNOTATED; i++) print "unannotated: " UNLIST[i]
-    printf "%d tables checked, %d numbers, %d unannotated tables with numbers (listed with --list)\n",
-        TABLES, NUMBERS, UNANNOTATED
+    printf "%d tables checked, %d numbers, %d sub-columns each held by one source column, %d table(s) opted out (columns: any), %d unannotated tables with numbers (listed with --list)\n",
+        TABLES, NUMBERS, SUBCOLUMNS, OPTOUTS, UNANNOTATED
     if (PROBLEMS) {
         printf "%d problem(s)\n", PROBLEMS
         exit 1
