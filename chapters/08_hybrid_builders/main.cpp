@@ -96,7 +96,7 @@ int run(int argc, const char* const* argv) {
         .option("out", "DIR", "", "write builders.csv (or with --from-race pareto.csv and pareto.svg) into DIR/ "
                 "(default out/08_hybrid_builders/)")
         .option("from-race", "CSV", "", "only draw pareto.svg and write pareto.csv from a race.csv (race --processes N "
-                "with chapters 05-08's *-fast BVH rows and embree-low, -medium and -high)")
+                "with chapters 04-08's *-fast BVH rows and embree-low, -medium and -high)")
         .flag("force", "replace existing files in a folder named with --out")
         .flag("quick", "the teapot and a soup of 20,000 triangles, 48 x 36 rays, one repeat");
     if (!args.parse(argc, argv)) return 0;

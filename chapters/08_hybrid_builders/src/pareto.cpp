@@ -13,14 +13,14 @@ namespace strahl::ch08 {
 
 namespace {
 
-// The course's BVH builders (chapters 05 to 08) walked by one traversal, chapter 05's fast one (the rows
+// The course's BVH builders (chapters 04 to 08) walked by one traversal, chapter 05's fast one (the rows
 // named *-fast), so that the trace time measures the tree; and Embree's three qualities. Not the grids,
 // k-d trees, wide trees or packet variants, which trade other things.
 bool compared(const race_csv_row& r) {
     if (r.structure.rfind("embree-", 0) == 0) return r.structure == "embree-low" || r.structure == "embree-medium" ||
                                                       r.structure == "embree-high";
     const bool fast = r.structure.size() > 5 && r.structure.compare(r.structure.size() - 5, 5, "-fast") == 0;
-    return fast && (r.chapter == "05" || r.chapter == "06" || r.chapter == "07" || r.chapter == "08");
+    return fast && (r.chapter == "04" || r.chapter == "05" || r.chapter == "06" || r.chapter == "07" || r.chapter == "08");
 }
 
 std::string group_of(const pareto_point& p) {
@@ -103,7 +103,7 @@ std::string pareto_svg(const std::vector<pareto_point>& points) {
         if (!stair.x.empty()) pl.series.insert(pl.series.begin(), stair);  // under the points
         out.push_back(pl);
     }
-    if (out.empty()) throw std::runtime_error("no *-fast rows of chapters 05 to 08 and no Embree rows with primary or diffuse rays to plot");
+    if (out.empty()) throw std::runtime_error("no *-fast rows of chapters 04 to 08 and no Embree rows with primary or diffuse rays to plot");
     return to_svg(out, 2, 640, 460);
 }
 

@@ -7,12 +7,12 @@
 #include "strahl/ch04/accel.hpp"
 #include "strahl/ch05/accel.hpp"
 #include "strahl/ch06/accel.hpp"
-#include <algorithm>
 #include "strahl/ch07/accel.hpp"
 #include "strahl/ch08/accel.hpp"
 #include "strahl/ch11/steps.hpp"
 #include "strahl/ch13/accel.hpp"
 #include "strahl/ch15/accel.hpp"
+#include <algorithm>
 #include <optional>
 #include <stdexcept>
 
@@ -73,6 +73,15 @@ std::vector<accel_entry> registered_accels(const registry_options& o) {
          [] { return ch04::make_accel(false, ch04::split_method::object_median); }},
         {"ch04-median-virtual", "04", "the same BVH over chapter 01's virtual objects",
          [] { return ch04::make_accel(true, ch04::split_method::object_median); }},
+        {"ch04-median-fast", "04", "the same object-median BVH walked by chapter 05's faster scalar traversal "
+         "(chapter 08's build/trace plot compares every builder under that walk)",
+         [] {
+             return ch05::make_bvh_accel(false, "ch04-median-fast", [](std::span<const aabb> b, std::span<const vec3> c) {
+                 ch04::bvh_build_params p;
+                 p.split = ch04::split_method::object_median;
+                 return ch04::build_bvh(b, c, p);
+             }, ch05::walk_kind::fast);
+         }},
         {"ch04-spatial", "04", "BVH, spatial median split, over plain triangles",
          [] { return ch04::make_accel(false, ch04::split_method::spatial_median); }},
         {"ch05-sweep", "05", "BVH, full SAH sweep over sorted centroids, chapter 04's traversal",

@@ -1,4 +1,4 @@
-// The build/trace trade, measured by the race: per scene and ray set, every BVH builder of chapters 05 to
+// The build/trace trade, measured by the race: per scene and ray set, every BVH builder of chapters 04 to
 // 08 walked by chapter 05's fast traversal (the race's rows *-fast, so that the trace time measures the
 // tree) as a point (build time, trace time), and the course's Pareto frontier: the builders that no other
 // builder of the course both builds and traces faster than. Embree's three qualities stand beside them as
@@ -16,7 +16,7 @@ struct pareto_point {
     bool on_frontier = false;           // on the course's frontier (never an Embree point)
 };
 
-// The points of a race's rows (primary and diffuse rays; chapters 05-08's *-fast rows and
+// The points of a race's rows (primary and diffuse rays; chapters 04-08's *-fast rows and
 // embree-low/medium/high), the course's frontier marked: in order of build time, a course point is on it
 // when it traces faster than every course point that builds faster.
 std::vector<pareto_point> pareto_points(const std::vector<race_csv_row>& rows);
