@@ -7,6 +7,7 @@
 #include "strahl/ch01/ray_sets.hpp"
 #include "strahl/ch05/accel.hpp"
 #include "strahl/ch07/accel.hpp"
+#include "strahl/ch07/builder_scenes.hpp"
 #include "strahl/ch07/morton.hpp"
 #include "strahl/ch07/radix_sort.hpp"
 #include "strahl/parallel.hpp"
@@ -247,10 +248,7 @@ void write_plots(const fs::path& phases_csv, const fs::path& quality_csv, const 
 }
 
 void write_file(const fs::path& path, const std::string& header, const std::ostringstream& rows) {
-    std::ofstream f(path);
-    f << header << '\n' << rows.str();
-    f.close();
-    if (!f) throw std::runtime_error("cannot write " + path.string());
+    write_text(path, header + '\n' + rows.str());
 }
 
 int run(int argc, const char* const* argv) {
@@ -281,10 +279,7 @@ int run(int argc, const char* const* argv) {
     if (o.repeats < 1 || o.repeats > 100) throw usage_error("--repeats must lie in [1, 100]");
     o.threads = read_threads(args, 0);
     if (o.threads == 0) o.threads = int(std::max(1u, std::thread::hardware_concurrency()));
-    const std::string which = quick ? "quick" : args.get("scene");
-    if (which != "quick" && which != "all" && which != "teapot" && which != "stadium" && which != "soup" &&
-        which != "bunny" && which != "sponza")
-        throw usage_error("--scene must be stadium, soup, bunny, sponza, teapot or all, not '" + which + "'");
+    const std::string which = ch07::builder_scene_choice(args.get("scene"), quick);
     const fs::path phases_csv = o.folder / "build_phases.csv", quality_csv = o.folder / "quality.csv",
                    sort_csv = o.folder / "sort.csv", scaling_csv = o.folder / "scaling.csv";
     const fs::path svgs[3] = {o.folder / "phases.svg", o.folder / "build_vs_trace.svg", o.folder / "sort.svg"};
@@ -305,15 +300,7 @@ int run(int argc, const char* const* argv) {
     for (const fs::path& p : {phases_csv, quality_csv, sort_csv, scaling_csv}) prepare_output(p, user_named, args.has("force"));
     for (const fs::path& p : svgs) prepare_output(p, user_named, args.has("force"));
 
-    std::vector<scene> scenes;
-    if (which == "teapot" || which == "quick") scenes.push_back(builtin_scene("teapot"));
-    if (which == "all" || which == "stadium") scenes.push_back(builtin_scene("teapot_stadium"));
-    if (which == "all" || which == "soup" || which == "quick")
-        scenes.push_back(mesh_scene("soup", random_soup(quick ? 20000 : 200000, 1)));
-    for (const auto& [name, file] : {std::pair{"bunny", "bunny.ply"}, std::pair{"sponza", "sponza.obj"}}) {
-        if (which != "all" && which != name) continue;
-        if (auto s = load_shared_mesh(file, name)) scenes.push_back(std::move(*s));
-    }
+    const std::vector<scene> scenes = ch07::builder_scenes(which);
     std::ostringstream phases, quality, sorts, scaling;
     for (const scene& s : scenes) {
         const inputs in(s.mesh);

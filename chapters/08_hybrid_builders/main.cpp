@@ -5,6 +5,7 @@
 // draws instead the build/trace trade of a race's every BVH builder and Embree, and its Pareto frontier.
 #include "strahl/ch01/ray_sets.hpp"
 #include "strahl/ch05/accel.hpp"
+#include "strahl/ch07/builder_scenes.hpp"
 #include "strahl/ch07/lbvh.hpp"
 #include "strahl/ch08/accel.hpp"
 #include "strahl/ch08/pareto.hpp"
@@ -75,13 +76,6 @@ void compare(const scene& s, const options& o, std::ostream& csv) {
     }
 }
 
-void write_text(const fs::path& path, const std::string& text) {
-    std::ofstream f(path);
-    f << text;
-    f.close();
-    if (!f) throw std::runtime_error("cannot write " + path.string());
-}
-
 int run(int argc, const char* const* argv) {
     cli args("ch08", "Chapter 08, the hybrid builders (" + std::string(track_name()) + "): HLBVH, PLOC, TRBVH and ATRBVH "
              "beside chapter 05's binned SAH and chapter 07's LBVH: build time at 1 and N threads, SAH cost, Mrays/s on "
@@ -122,22 +116,11 @@ int run(int argc, const char* const* argv) {
     if (o.repeats < 1 || o.repeats > 100) throw usage_error("--repeats must lie in [1, 100]");
     o.threads = read_threads(args, 0);
     if (o.threads == 0) o.threads = int(std::max(1u, std::thread::hardware_concurrency()));
-    const std::string which = quick ? "quick" : args.get("scene");
-    if (which != "quick" && which != "all" && which != "teapot" && which != "stadium" && which != "soup" &&
-        which != "bunny" && which != "sponza")
-        throw usage_error("--scene must be stadium, soup, bunny, sponza, teapot or all, not '" + which + "'");
+    const std::string which = ch07::builder_scene_choice(args.get("scene"), quick);
     const fs::path csv_path = folder / "builders.csv";
     prepare_output(csv_path, user_named, force);
 
-    std::vector<scene> scenes;
-    if (which == "teapot" || which == "quick") scenes.push_back(builtin_scene("teapot"));
-    if (which == "all" || which == "stadium") scenes.push_back(builtin_scene("teapot_stadium"));
-    if (which == "all" || which == "soup" || which == "quick")
-        scenes.push_back(mesh_scene("soup", random_soup(quick ? 20000 : 200000, 1)));
-    for (const auto& [name, file] : {std::pair{"bunny", "bunny.ply"}, std::pair{"sponza", "sponza.obj"}}) {
-        if (which != "all" && which != name) continue;
-        if (auto s = load_shared_mesh(file, name)) scenes.push_back(std::move(*s));
-    }
+    const std::vector<scene> scenes = ch07::builder_scenes(which);
     std::ostringstream rows;
     for (const scene& s : scenes) compare(s, o, rows);
     write_text(csv_path, std::string(builders_header) + "\n" + rows.str());

@@ -33,13 +33,6 @@ struct step_row {
 
 void write_staircase(const std::vector<step_row>& steps, const fs::path& svg, const std::string& how);
 
-void write_text(const fs::path& file, const std::string& text) {
-    std::ofstream f(file);
-    f << text;
-    f.close();
-    if (!f) throw std::runtime_error("cannot write " + file.string());
-}
-
 std::vector<step_row> run_steps(const scene& s, const std::string& name, int width, int height, int repeats) {
     std::printf("%s: %zu triangles; %d x %d primary rays, as many diffuse and shadow rays; one thread, median of %d\n",
                 name.c_str(), s.mesh.triangle_count(), width, height, repeats);

@@ -339,13 +339,6 @@ void write_plot(const std::map<key, tally>& t, const fs::path& svg) {
     write_svg(svg, to_svg(p, 900, 520));
 }
 
-void write_text(const fs::path& file, const std::string& text) {
-    std::ofstream f(file);
-    f << text;
-    f.close();
-    if (!f) throw std::runtime_error("cannot write " + file.string());
-}
-
 std::vector<std::string> split(const std::string& s) {
     std::vector<std::string> out;
     std::stringstream in(s);

@@ -1,5 +1,6 @@
 #include "strahl/diagram.hpp"
 #include "strahl/plot.hpp"
+#include "strahl/program.hpp"
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -118,5 +119,15 @@ std::string diagram::svg() const {
 }
 
 void diagram::write(const std::filesystem::path& file) const { write_svg(file, svg()); }
+
+std::vector<std::filesystem::path> write_figures(const std::filesystem::path& folder, bool force,
+                                                 const std::vector<named_figure>& figures) {
+    std::vector<std::filesystem::path> files;
+    for (const named_figure& f : figures) files.push_back(folder / f.file), prepare_output(files.back(), true, force);
+    std::vector<diagram> drawn;
+    for (const named_figure& f : figures) drawn.push_back(f.draw());
+    for (std::size_t k = 0; k < files.size(); ++k) drawn[k].write(files[k]);
+    return files;
+}
 
 }  // namespace strahl

@@ -1,4 +1,5 @@
 #include "strahl/plot.hpp"
+#include "strahl/program.hpp"
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -298,12 +299,6 @@ std::string to_svg(const bar_chart& c, int width, int height) {
     return out.str();
 }
 
-void write_svg(const std::filesystem::path& file, const std::string& svg) {
-    std::ofstream out(file, std::ios::trunc);
-    if (!out) throw std::runtime_error("cannot write '" + file.string() + "': " + std::strerror(errno));
-    out << svg;
-    out.close();
-    if (!out) throw std::runtime_error("writing '" + file.string() + "' failed");
-}
+void write_svg(const std::filesystem::path& file, const std::string& svg) { write_text(file, svg); }
 
 }  // namespace strahl

@@ -173,6 +173,14 @@ int guarded_main(const char* program, int (*body)(int, const char* const*), int 
     }
 }
 
+void write_text(const std::filesystem::path& file, const std::string& text) {
+    std::ofstream out(file, std::ios::trunc);
+    if (!out) throw std::runtime_error("cannot write '" + file.string() + "': " + std::strerror(errno));
+    out << text;
+    out.close();
+    if (!out) throw std::runtime_error("writing '" + file.string() + "' failed");
+}
+
 void prepare_output(const std::filesystem::path& file, bool user_named, bool force) {
     namespace fs = std::filesystem;
     if (file.empty()) throw std::runtime_error("empty output path");

@@ -112,16 +112,8 @@ TEST_CASE("ch08 HLBVH: the SAH above the clusters prices the tree below the LBVH
 }
 
 TEST_CASE("ch08 HLBVH: chapter 05's fast walk over the flattened tree equals brute force", "[ch08][adversarial]") {
-    std::vector<std::pair<std::string, triangle_mesh>> meshes = {{"teapot in a stadium", builtin_scene("teapot_stadium").mesh},
-                                                                 {"soup", random_soup(1500, 3, 0.1f)}};
     // The bunny with fewer rays: brute force over its 69,451 triangles costs 1.5 s per 1000 rays here.
-    const std::filesystem::path bunny = test::shared_scene("bunny.ply");
-    if (bunny.empty())
-        WARN("skipped the bunny: ../shared/scenes/bunny.ply is not beside this clone");
-    else if (test::under_sanitizers)
-        WARN("skipped the bunny under the sanitizers (the release run checks it)");
-    else
-        meshes.emplace_back("bunny", load_mesh(bunny));
+    const auto meshes = test::exactness_meshes();
     for (const auto& [name, m] : meshes) {
         const auto a = hlbvh_accel({});
         a->build(test::mesh_only(m));

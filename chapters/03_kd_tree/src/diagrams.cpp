@@ -103,11 +103,7 @@ diagram near_far_figure() {
 }  // namespace
 
 std::vector<std::filesystem::path> write_diagrams(const std::filesystem::path& folder, bool force) {
-    const std::vector<std::filesystem::path> files{folder / "near_far.svg"};
-    for (const auto& f : files) prepare_output(f, true, force);
-    const diagram figure = near_far_figure();  // drawn first: an unfinished exercise leaves no file behind
-    figure.write(files[0]);
-    return files;
+    return write_figures(folder, force, {{"near_far.svg", near_far_figure}});
 }
 
 }  // namespace strahl::ch03

@@ -349,13 +349,8 @@ diagram slab_figure() {
 }  // namespace
 
 std::vector<std::filesystem::path> write_diagrams(const std::filesystem::path& folder, bool force) {
-    const std::vector<std::filesystem::path> files{folder / "subdivision.svg", folder / "flattened.svg",
-                                                   folder / "slab_test.svg"};
-    for (const auto& f : files) prepare_output(f, true, force);  // all refused before any is written
-    // Drawn before writing: an unfinished exercise (the builder, the slab test) leaves no file behind.
-    const diagram figures[] = {subdivision(), flattened(), slab_figure()};
-    for (std::size_t k = 0; k < files.size(); ++k) figures[k].write(files[k]);
-    return files;
+    return write_figures(folder, force, {{"subdivision.svg", subdivision}, {"flattened.svg", flattened},
+                                         {"slab_test.svg", slab_figure}});
 }
 
 }  // namespace strahl::ch04

@@ -176,11 +176,7 @@ diagram sweep_and_bins() {
 }  // namespace
 
 std::vector<std::filesystem::path> write_diagrams(const std::filesystem::path& folder, bool force) {
-    const std::vector<std::filesystem::path> files{folder / "sweep_and_bins.svg"};
-    for (const auto& f : files) prepare_output(f, true, force);
-    const diagram figure = sweep_and_bins();  // drawn first: an unfinished exercise leaves no file behind
-    figure.write(files[0]);
-    return files;
+    return write_figures(folder, force, {{"sweep_and_bins.svg", sweep_and_bins}});
 }
 
 }  // namespace strahl::ch05

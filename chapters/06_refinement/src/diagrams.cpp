@@ -150,11 +150,7 @@ diagram rotation_figure() {
 }  // namespace
 
 std::vector<std::filesystem::path> write_diagrams(const std::filesystem::path& folder, bool force) {
-    const std::vector<std::filesystem::path> files{folder / "rotation.svg"};
-    for (const auto& f : files) prepare_output(f, true, force);
-    const diagram figure = rotation_figure();  // drawn first: an unfinished exercise leaves no file behind
-    figure.write(files[0]);
-    return files;
+    return write_figures(folder, force, {{"rotation.svg", rotation_figure}});
 }
 
 }  // namespace strahl::ch06

@@ -3,6 +3,7 @@
 // so that a figure cannot drift from the code. SVG is text, as in plot.hpp: any browser opens it.
 #pragma once
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -76,6 +77,16 @@ private:
     double ox_ = 0.0, oy_ = 0.0, sx_ = 1.0, sy_ = 1.0;  // pixel = (ox + sx x, oy + sy y)
     std::string body_;
 };
+
+// A chapter's --diagrams: each figure's file name and the function that draws it. write_figures refuses
+// every file first (prepare_output: nothing replaced without force), then draws every figure, then writes
+// them: an unfinished exercise stops the drawing and leaves no file behind. Returns the files written.
+struct named_figure {
+    std::string file;
+    std::function<diagram()> draw;
+};
+std::vector<std::filesystem::path> write_figures(const std::filesystem::path& folder, bool force,
+                                                 const std::vector<named_figure>& figures);
 
 // The text with <, >, & and " written as entities, for SVG (and any XML) text and attributes.
 std::string svg_escape(const std::string& text);

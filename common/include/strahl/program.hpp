@@ -65,6 +65,10 @@ int guarded_main(const char* program, int (*body)(int, const char* const*), int 
 // symbolic link to nothing (writing would create its target somewhere the user did not name).
 void prepare_output(const std::filesystem::path& file, bool user_named, bool force);
 
+// Writes text (a CSV table, an SVG) to file, replacing it; throws std::runtime_error naming the file if it
+// cannot (call prepare_output first for the user's files).
+void write_text(const std::filesystem::path& file, const std::string& text);
+
 // The most threads --threads takes. TBB and Embree set up state per thread they are allowed, so an
 // unbounded count (--threads 2147483647) allocates until memory runs out; 1024 is far above any machine
 // the course runs on.
