@@ -50,6 +50,11 @@ case $nn in
     sized=() ;;
 08) args=(--quick --width 32 --out "$out") files=(builders.csv)
     sized=() ;;
+09) args=(--quick --width 32 --out "$out") files=(compare.csv alpha.csv alpha.svg)
+    sized=() ;;
+10) args=(--quick --width 32 --out "$out") files=(animation.csv breakeven.csv summary.csv big.csv update_vs_trace.svg sah_drift.svg
+        frames/frame_000.png frames/frame_002.png animation.gif)
+    sized=(frames/frame_000.png:"32 24") ;;
 11) args=(--quick --width 32 --out "$out") files=(steps.csv render.csv staircase.svg render.png)
     sized=(render.png:"32 32") ;;
 13) args=(--quick --width 32 --repeats 1 --out "$out") files=(wide.csv speedup.svg)
@@ -183,9 +188,10 @@ if [[ $nn == 04 ]]; then
     contains "$dir/sweep/sweep.svg" "nodes (cells) visited per ray" "--sweep's plot"
 fi
 
-# Chapters 05 and 06 redraw their plots from the table they wrote: the same points, and bad tables are refused.
-if [[ $nn == 05 || $nn == 06 ]]; then
+# Chapters 05, 06 and 10 redraw their plots from the table they wrote: the same points, and bad tables are refused.
+if [[ $nn == 05 || $nn == 06 || $nn == 10 ]]; then
     if [[ $nn == 05 ]]; then table=bins.csv plots=(build_vs_trace.svg bins_vs_sah.svg)
+    elif [[ $nn == 10 ]]; then table=animation.csv plots=(update_vs_trace.svg sah_drift.svg)
     else table=refinement.csv plots=(sah_vs_time_stadium.svg); fi
     runs "--replot" 0 "$program" --replot "$out/$table" --out "$dir/replot"
     for f in "${plots[@]}"; do
@@ -196,7 +202,9 @@ if [[ $nn == 05 || $nn == 06 ]]; then
     contains "$dir/err" "not overwriting" "--replot again without --force"
     echo "scene,tree" >"$dir/bad.csv"
     runs "--replot of a foreign file" 1 "$program" --replot "$dir/bad.csv" --out "$dir/replot2"
-    contains "$dir/err" "is not a $table written by ch$nn" "--replot of a foreign file"
+    article=a
+    [[ $table != animation.csv ]] || article=an
+    contains "$dir/err" "is not $article $table written by ch$nn" "--replot of a foreign file"
     { head -n 1 "$out/$table"; head -n 2 "$out/$table" | tail -n 1 | sed 's/,[^,]*$/,nan/'; } >"$dir/nan.csv"
     runs "--replot of a NaN" 1 "$program" --replot "$dir/nan.csv" --out "$dir/replot3"
     contains "$dir/err" "line 2: 'nan' is not a number" "--replot of a NaN"

@@ -80,6 +80,35 @@ void write_image(const std::filesystem::path& file, const image& img) {
     if (!wrote || !closed) throw image_error("write_image " + quoted(file) + ": writing failed: " + out->geterror());
 }
 
+bool write_animation(const std::filesystem::path& file, const std::vector<image>& frames, int frames_per_second) {
+    if (frames.empty()) throw image_error("write_animation " + quoted(file) + ": no frames");
+    for (const image& f : frames)
+        if (f.width != frames[0].width || f.height != frames[0].height || f.width <= 0 || f.height <= 0 ||
+            f.pixels.size() != std::size_t(f.width) * std::size_t(f.height))
+            throw image_error("write_animation " + quoted(file) + ": frames of different or empty sizes");
+    auto out = OIIO::ImageOutput::create(file.string());
+    if (!out || !out->supports("multiimage") || !out->supports("appendsubimage")) {
+        OIIO::geterror();
+        return false;
+    }
+    OIIO::ImageSpec spec(frames[0].width, frames[0].height, 3, OIIO::TypeDesc::UINT8);
+    spec.attribute("oiio:ColorSpace", "sRGB");
+    spec.attribute("FramesPerSecond", OIIO::TypeRational, std::array<int, 2>{frames_per_second, 1}.data());
+    spec.attribute("oiio:LoopCount", 0);  // loop for ever
+    std::vector<unsigned char> encoded(3 * frames[0].pixels.size());
+    for (std::size_t k = 0; k < frames.size(); ++k) {
+        const bool opened = k == 0 ? out->open(file.string(), spec) : out->open(file.string(), spec, OIIO::ImageOutput::AppendSubimage);
+        if (!opened) throw image_error("write_animation " + quoted(file) + ": cannot open for writing: " + out->geterror());
+        for (std::size_t i = 0; i < frames[k].pixels.size(); ++i)
+            for (int c = 0; c < 3; ++c)
+                encoded[3 * i + c] = static_cast<unsigned char>(std::lround(255.0f * srgb_encode(frames[k].pixels[i][c])));
+        if (!out->write_image(OIIO::TypeDesc::UINT8, encoded.data()))
+            throw image_error("write_animation " + quoted(file) + ": writing failed: " + out->geterror());
+    }
+    if (!out->close()) throw image_error("write_animation " + quoted(file) + ": writing failed: " + out->geterror());
+    return true;
+}
+
 // ---- reading -------------------------------------------------------------------------------------------------
 image read_image(const std::filesystem::path& file) {
     std::error_code ec;

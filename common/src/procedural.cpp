@@ -2,6 +2,7 @@
 // UV sphere, random and clustered triangle soups. Every generator is deterministic; the emitted triangle
 // order is documented at each function (it is the primitive id).
 #include "strahl/procedural.hpp"
+#include "strahl/instancing.hpp"
 #include "strahl/rng.hpp"
 #include <array>
 #include <cmath>
@@ -258,7 +259,7 @@ scene mesh_scene(std::string name, triangle_mesh mesh) {
 }
 
 std::vector<std::string> builtin_scene_names() {
-    return {"cornell", "teapot", "teapot_stadium", "sphere", "soup", "clustered_soup"};
+    return {"cornell", "teapot", "teapot_stadium", "sphere", "soup", "clustered_soup", "teapot_field"};
 }
 
 scene builtin_scene(const std::string& name) {
@@ -269,6 +270,13 @@ scene builtin_scene(const std::string& name) {
     if (name == "sphere") return mesh_scene(name, tessellated_sphere(32, 64));
     if (name == "soup") return mesh_scene(name, random_soup(10000, 1));
     if (name == "clustered_soup") return mesh_scene(name, clustered_soup(10000, 1));
+    if (name == "teapot_field") {
+        scene s = instanced_scene(make_field(teapot_mesh(4), "teapot", 5, 5, 1.5f), name);
+        const aabb box = s.mesh.bounds();
+        s.camera = elevated_camera(box, 35.0f);  // from above the front row: most rays meet a teapot
+        s.lights = {frame_light(box, s.camera)};
+        return s;
+    }
     std::string valid;
     for (const std::string& n : builtin_scene_names()) valid += (valid.empty() ? "" : ", ") + n;
     throw std::invalid_argument("unknown builtin scene '" + name + "'; valid names: " + valid);

@@ -20,6 +20,7 @@
 //   8. with a log, a warning when the mesh is below float32 resolution at its distance from the origin.
 // Reference: assimp 5.2 documentation, https://assimp-docs.readthedocs.io (Importer, aiScene, aiNode).
 #include "strahl/scene.hpp"
+#include "strahl/instancing.hpp"
 #include "strahl/procedural.hpp"
 #include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
@@ -1089,6 +1090,14 @@ const box_view* known_view(const std::string& file_name) {
 }  // namespace
 
 scene load_scene(const std::filesystem::path& file, std::ostream* log) {
+    if (file.extension() == ".scene") {
+        // An instanced scene (instancing.hpp): its meshes and instances, and their flattened copy.
+        std::optional<std::array<float, 7>> camera;
+        instanced_meshes inst = load_instanced(file, log, &camera);
+        scene s = instanced_scene(std::move(inst), file.filename().string(), camera);
+        if (log) *log << describe(s) << '\n';
+        return s;
+    }
     scene s;
     s.name = file.filename().string();
     s.mesh = load_mesh(file, log);
@@ -1123,6 +1132,9 @@ std::string describe(const scene& s) {
     std::string line = summary(s.name, s.mesh.triangle_count(), s.mesh.positions.size());
     if (!s.spheres.empty()) line += ", " + with_thousands(s.spheres.size()) + (s.spheres.size() == 1 ? " sphere" : " spheres");
     if (!s.planes.empty()) line += ", " + with_thousands(s.planes.size()) + (s.planes.size() == 1 ? " plane" : " planes");
+    if (s.instances)
+        line += " (" + with_thousands(s.instances->instances.size()) + " instances of " +
+                with_thousands(s.instances->meshes.size()) + (s.instances->meshes.size() == 1 ? " mesh)" : " meshes)");
     return line;
 }
 

@@ -144,4 +144,18 @@ printf 'v 0 0 0\nv 2e19 0 2e19\nv 0 2e19 2e19\nf 1 2 3\n' >"$dir/huge.obj"
 refuses "a scene too large for float" 1 "huge.obj" --scene "$dir/huge.obj" --gen primary --width 8 --height 8
 contains "$dir/err" "beyond +-1e12, the largest coordinate the course accepts" "a scene too large for float"
 
+# An instanced scene file (chapter 10): the two-level BVH and brute force over the flattened copy find the
+# same triangles (the same ids) for the same rays; a malformed line is refused with its number.
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n' >"$dir/tri.obj"
+printf 'mesh tri tri.obj\nfield tri 3 3 1.5 1.5\ninstance tri translate 0 2 0 rotate x 30\n' >"$dir/field.scene"
+succeeds "an instanced scene, ch10-two-level" --scene "$dir/field.scene" --accel ch10-two-level --gen primary \
+    --width 32 --height 24 --rays-out "$dir/RI" --out "$dir/HI"
+contains "$dir/out" "10 instances of 1 mesh" "an instanced scene"
+succeeds "an instanced scene, ch10-brute-instanced" --scene "$dir/field.scene" --rays "$dir/RI" \
+    --accel ch10-brute-instanced --out "$dir/HI2"
+cmp -s "$dir/HI" "$dir/HI2" || fail "an instanced scene: ch10-two-level's hits differ from the instanced brute force's"
+printf 'mesh tri tri.obj\ninstance tri scale 0\n' >"$dir/singular.scene"
+refuses "a singular instance" 1 "singular.scene:2: the transform is singular" --scene "$dir/singular.scene" \
+    --gen primary --width 8 --height 8
+
 finish strahl-trace

@@ -233,7 +233,8 @@ TEST_CASE("procedural: random and clustered soups are deterministic and stay in 
 
 TEST_CASE("procedural: builtin scene names round-trip, unknown names list the valid ones", "[common][procedural]") {
     const auto names = builtin_scene_names();
-    CHECK(names == std::vector<std::string>{"cornell", "teapot", "teapot_stadium", "sphere", "soup", "clustered_soup"});
+    CHECK(names == std::vector<std::string>{"cornell", "teapot", "teapot_stadium", "sphere", "soup", "clustered_soup",
+                                             "teapot_field"});
     for (const std::string& name : names) {
         const scene s = builtin_scene(name);
         CHECK(s.name == name);

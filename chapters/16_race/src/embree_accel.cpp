@@ -42,6 +42,8 @@ const embree_report& embree_configuration() {
 #else
 
 #include "strahl/race/brute_force.hpp"
+#include "strahl/ch10/accel.hpp"
+#include "strahl/instancing.hpp"
 #include <cmath>
 #include <embree3/rtcore.h>
 #include <algorithm>
@@ -85,7 +87,7 @@ public:
         if (!device_) throw std::runtime_error("Embree: rtcNewDevice failed (error " + std::to_string(rtcGetDeviceError(nullptr)) + ")");
     }
     ~embree_accel() override {
-        if (scene_) rtcReleaseScene(scene_);
+        release();
         rtcReleaseDevice(device_);
     }
 
@@ -94,6 +96,7 @@ public:
         std::string n = config_.build_quality == q::high  ? "embree-high"
                         : config_.build_quality == q::low ? "embree-low"
                                                           : "embree-medium";
+        if (config_.instanced) n += "-instanced";
         return config_.packet_image_width > 0 ? n + "-packet8" : n;
     }
     bool exact() const override { return false; }
@@ -106,24 +109,16 @@ public:
             const std::lock_guard<std::mutex> lock(fallback_mutex_);
             fallback_.reset();
         }
-        if (scene_) rtcReleaseScene(scene_);
+        release();
+        instances_.reset();
+        bytes_ = 0;
+        vertices_ = triangles_ = 0;
+        if (config_.instanced) return build_instanced(s);
         scene_ = rtcNewScene(device_);
         rtcSetSceneBuildQuality(scene_, quality());
         const std::size_t nv = s.mesh.positions.size(), nt = s.mesh.triangle_count();
-        bytes_ = 0;
-        vertices_ = triangles_ = 0;
         if (nt > 0) {
-            RTCGeometry geom = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
-            rtcSetGeometryBuildQuality(geom, quality());
-            // Embree copies into buffers it owns (and pads for its 16-byte loads).
-            auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
-                                                                   3 * sizeof(float), nv));
-            for (std::size_t i = 0; i < nv; ++i)
-                for (int k = 0; k < 3; ++k) v[3 * i + k] = s.mesh.positions[i][k];
-            auto* idx = static_cast<unsigned*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-                                                                      3 * sizeof(unsigned), nt));
-            for (std::size_t i = 0; i < nt; ++i)
-                for (int k = 0; k < 3; ++k) idx[3 * i + k] = s.mesh.indices[i][k];
+            RTCGeometry geom = triangles(s.mesh);
             if (config_.probe) {
                 rtcSetGeometryUserData(geom, config_.probe);
                 rtcSetGeometryIntersectFilterFunction(geom, probe_filter);
@@ -158,6 +153,8 @@ public:
             RTCRayHit rh = to_embree(rays[i]);
             rtcIntersect1(scene_, &context, &rh);
             hits[i] = from_embree(rh.ray.tfar, rh.hit.geomID, rh.hit.primID, rh.hit.u, rh.hit.v);
+            if (config_.instanced && hits[i].found())
+                hits[i].inst = rh.hit.instID[0], hits[i].prim += first_ids_[rh.hit.instID[0]];
         }
     }
 
@@ -181,6 +178,60 @@ public:
     std::size_t memory_bytes() const override { return bytes_; }
 
 private:
+    void release() {
+        if (scene_) rtcReleaseScene(scene_);
+        for (RTCScene m : mesh_scenes_) rtcReleaseScene(m);
+        scene_ = nullptr;
+        mesh_scenes_.clear();
+    }
+    // A triangle geometry over the mesh: Embree copies into buffers it owns (and pads for its 16-byte loads).
+    RTCGeometry triangles(const triangle_mesh& mesh) {
+        const std::size_t nv = mesh.positions.size(), nt = mesh.triangle_count();
+        RTCGeometry geom = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
+        rtcSetGeometryBuildQuality(geom, quality());
+        auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                                               3 * sizeof(float), nv));
+        for (std::size_t i = 0; i < nv; ++i)
+            for (int k = 0; k < 3; ++k) v[3 * i + k] = mesh.positions[i][k];
+        auto* idx = static_cast<unsigned*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                                                  3 * sizeof(unsigned), nt));
+        for (std::size_t i = 0; i < nt; ++i)
+            for (int k = 0; k < 3; ++k) idx[3 * i + k] = mesh.indices[i][k];
+        return geom;
+    }
+    // Embree's instancing: a scene per mesh, an instance geometry per instance (geometry id = instance id).
+    void build_instanced(const scene& s) {
+        instances_ = std::make_shared<const instanced_meshes>(ch10::instances_of(s));
+        first_ids_ = instances_->first_ids();
+        for (const triangle_mesh& m : instances_->meshes) {
+            RTCScene ms = rtcNewScene(device_);
+            rtcSetSceneBuildQuality(ms, quality());
+            if (m.triangle_count() > 0) {
+                RTCGeometry g = triangles(m);
+                rtcCommitGeometry(g);
+                rtcAttachGeometry(ms, g);
+                rtcReleaseGeometry(g);
+            }
+            rtcCommitScene(ms);
+            mesh_scenes_.push_back(ms);
+            bytes_ += m.positions.size() * 12 + m.triangle_count() * 12;
+        }
+        scene_ = rtcNewScene(device_);
+        rtcSetSceneBuildQuality(scene_, quality());
+        for (std::size_t i = 0; i < instances_->instances.size(); ++i) {
+            const instance& in = instances_->instances[i];
+            RTCGeometry g = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_INSTANCE);
+            rtcSetGeometryInstancedScene(g, mesh_scenes_[in.mesh]);
+            rtcSetGeometryTransform(g, 0, RTC_FORMAT_FLOAT3X4_ROW_MAJOR, &in.to_world.m[0][0]);
+            rtcCommitGeometry(g);
+            rtcAttachGeometryByID(scene_, g, unsigned(i));
+            rtcReleaseGeometry(g);
+        }
+        bytes_ += instances_->instances.size() * sizeof(instance);
+        rtcCommitScene(scene_);
+        if (const RTCError e = rtcGetDeviceError(device_); e != RTC_ERROR_NONE)
+            throw std::runtime_error("Embree: building the instanced scene failed (error " + std::to_string(int(e)) + ")");
+    }
     RTCBuildQuality quality() const {
         using q = embree_config::quality;
         return config_.build_quality == q::high  ? RTC_BUILD_QUALITY_HIGH
@@ -243,8 +294,15 @@ private:
 
     // Brute force over Embree's own copy of the triangles, for the rays Embree cannot take (embree_takes);
     // made on first need, so that Embree's build and memory stay Embree's.
-    const brute_force& fallback() const {
+    const accel& fallback() const {
         const std::lock_guard<std::mutex> lock(fallback_mutex_);
+        if (!fallback_ && instances_) {
+            // Instanced: chapter 10's instanced brute force over the same instances.
+            scene copy;
+            copy.instances = instances_;
+            fallback_ = ch10::make_brute_accel();
+            fallback_->build(copy);
+        }
         if (!fallback_) {
             scene copy;
             if (RTCGeometry g = scene_ ? rtcGetGeometry(scene_, 0) : nullptr) {
@@ -263,7 +321,10 @@ private:
 
     embree_config config_;
     mutable std::mutex fallback_mutex_;
-    mutable std::unique_ptr<brute_force> fallback_;
+    mutable std::unique_ptr<accel> fallback_;
+    std::shared_ptr<const instanced_meshes> instances_;  // instanced only
+    std::vector<std::uint32_t> first_ids_;               // instanced only: flattened id of each instance's first
+    std::vector<RTCScene> mesh_scenes_;                  // instanced only: one per mesh
     std::size_t vertices_ = 0, triangles_ = 0;
     RTCDevice device_ = nullptr;
     RTCScene scene_ = nullptr;

@@ -9,6 +9,8 @@
 #include "strahl/ch06/accel.hpp"
 #include "strahl/ch07/accel.hpp"
 #include "strahl/ch08/accel.hpp"
+#include "strahl/ch09/accel.hpp"
+#include "strahl/ch10/accel.hpp"
 #include "strahl/ch11/steps.hpp"
 #include "strahl/ch13/accel.hpp"
 #include "strahl/ch15/accel.hpp"
@@ -56,6 +58,12 @@ accel_entry wide(std::string name, std::string description, int width, int block
               return ch05::build_sah_bvh_fast(b, centroids, sah(ch05::sah_method::binned, 16));
           });
     return {name, "13", std::move(description), [name, source, c] { return ch13::make_accel(name, source, c); }};
+}
+// Chapter 13's wide walk over another chapter's tree: N-wide nodes (optimal collapse), blocks of M.
+ch13::wide_config wide_optimal(int width, int block) {
+    ch13::wide_config c;
+    c.width = width, c.block = block, c.collapse.method = ch13::collapse_method::optimal;
+    return c;
 }
 }  // namespace
 
@@ -108,6 +116,15 @@ std::vector<accel_entry> registered_accels(const registry_options& o) {
         lbvh("ch07-lbvh63-fast", "the same LBVH with 63-bit Morton codes", ch07::hierarchy_method::lecture, 21),
         lbvh("ch07-karras30-fast", "LBVH, 30-bit codes, Karras's parallel hierarchy (HPG 2012); chapter 05's fast walk",
              ch07::hierarchy_method::karras, 10),
+        {"ch09-sbvh-fast", "09", "SBVH: chapter 05's binned SAH with spatial splits (Stich et al. 2009; alpha 1e-5, "
+         "1.5 references per triangle at most); chapter 05's fast walk",
+         [] { return std::unique_ptr<accel>(ch09::make_accel({}, "ch09-sbvh-fast")); }},
+        {"ch09-sbvh-bvh8", "09", "chapter 09's SBVH collapsed into 8-wide nodes (optimal), blocks of 4; chapter 13's wide walk",
+         [] { return std::unique_ptr<accel>(ch13::make_accel_from_mesh("ch09-sbvh-bvh8", [](const triangle_mesh& m) {
+             return ch09::build_sbvh(m); }, wide_optimal(8, 4))); }},
+        {"ch10-two-level", "10", "two-level BVH: chapter 05's binned SAH tree per mesh, one over the instances; the ray "
+         "moved into each instance's object space (a plain scene is one instance)",
+         [] { return std::unique_ptr<accel>(ch10::make_accel()); }, false, "ch10-brute-instanced"},
         ch11_step(ch11::step::virtual_calls), ch11_step(ch11::step::variant), ch11_step(ch11::step::type_sorted),
         ch11_step(ch11::step::triangles_only), ch11_step(ch11::step::inlined), ch11_step(ch11::step::soa),
         wide("ch13-bvh4", "chapter 05's binned SAH tree collapsed greedily into 4-wide nodes, leaves in blocks of 4 triangles",
@@ -150,6 +167,13 @@ std::vector<accel_entry> registered_accels(const registry_options& o) {
                         [o] { return make_embree_accel({q::medium, 0, o.threads}); }});
         list.push_back({"embree-high", "--", "Embree 3, high build quality (spatial splits), rtcIntersect1/rtcOccluded1",
                         [o] { return make_embree_accel({q::high, 0, o.threads}); }});
+        list.push_back({"embree-medium-instanced", "--", "Embree 3, medium quality, its own instancing: a scene per mesh, "
+                        "an instance geometry per instance (chapter 10's yardstick; a plain scene is one instance)",
+                        [o] {
+                            embree_config c{q::medium, 0, o.threads};
+                            c.instanced = true;
+                            return make_embree_accel(c);
+                        }, false, "ch10-brute-instanced"});
         if (o.packet_width > 0)
             list.push_back({"embree-medium-packet8", "--", "Embree 3, medium quality, rtcIntersect8 on 4x2 pixel tiles",
                             [o] { return make_embree_accel({q::medium, o.packet_width, o.threads}); }});
@@ -204,8 +228,11 @@ accel_entry find_accel(const std::string& name, const registry_options& options)
     }
     if (std::optional<accel_entry> e = binned_by_name(name)) return *e;
     if (std::optional<accel_entry> e = ch15_by_name(name)) return *e;
+    if (name == "ch10-brute-instanced")
+        return accel_entry{name, "10", "chapter 10's instanced brute force: every instance, the ray in its object space",
+                           [] { return ch10::make_brute_accel(); }, true, name};
     throw std::invalid_argument("no structure named '" + name + "' (have: " + names +
-                                "; and ch05-binnedK, ch05-binnedK-fast for K in 2..256; ch15-TEST-BOX and brute-TEST "
+                                "; and ch10-brute-instanced; ch05-binnedK, ch05-binnedK-fast for K in 2..256; ch15-TEST-BOX and brute-TEST "
                                 "for chapter 15's tests mt, mt-epsilon, mt-edges, watertight, watertight-double and "
                                 "boxes plain, conservative, fast)");
 }

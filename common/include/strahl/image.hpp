@@ -31,6 +31,11 @@ public:
 void write_image(const std::filesystem::path& file, const image& img);
 image read_image(const std::filesystem::path& file);
 
+// An animated image (GIF, where OpenImageIO writes it with several subimages): frames of one size, 8-bit
+// sRGB, looping. Returns false, writing nothing, where the format holds no animation; throws image_error
+// for empty or unequal frames and for a file that cannot be written.
+bool write_animation(const std::filesystem::path& file, const std::vector<image>& frames, int frames_per_second);
+
 struct image_difference {
     double rmse = 0.0;              // root mean square over all channels
     double max_error = 0.0;         // largest absolute channel difference

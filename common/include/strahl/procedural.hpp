@@ -58,9 +58,11 @@ triangle_mesh clustered_soup(std::size_t count, std::uint64_t seed, int clusters
 // Wraps a mesh into a scene with one diffuse material, a framing camera and a light (as load_scene does).
 scene mesh_scene(std::string name, triangle_mesh mesh);
 
-// Names accepted by builtin_scene(): cornell, teapot, teapot_stadium, sphere, soup, clustered_soup.
-// They are: cornell_box(true), teapot_scene(8), teapot_in_stadium(8, 64), tessellated_sphere(32, 64),
-// random_soup(10000, 1) and clustered_soup(10000, 1); each scene's name is its builtin name.
+// Names accepted by builtin_scene(): cornell, teapot, teapot_stadium, sphere, soup, clustered_soup,
+// teapot_field. They are: cornell_box(true), teapot_scene(8), teapot_in_stadium(8, 64),
+// tessellated_sphere(32, 64), random_soup(10000, 1), clustered_soup(10000, 1), and an instanced scene
+// (instancing.hpp): make_field(teapot_mesh(4), 5 x 5, spacing 1.5), 25 teapots of 1,024 triangles; each
+// scene's name is its builtin name.
 std::vector<std::string> builtin_scene_names();
 scene builtin_scene(const std::string& name);  // throws std::invalid_argument for an unknown name
 

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <iosfwd>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -58,9 +59,14 @@ struct point_light {
     color intensity{1.0f};
 };
 
+struct instanced_meshes;  // instancing.hpp
+
 struct scene {
     std::string name;
     triangle_mesh mesh;
+    // An instanced scene's meshes and instances (instancing.hpp), whose flattened copy mesh holds; null for
+    // a scene of one mesh. Chapter 10's two-level structures trace it instanced.
+    std::shared_ptr<const instanced_meshes> instances;
     std::vector<std::uint32_t> triangle_materials;  // empty: every triangle uses material 0
     std::vector<sphere_desc> spheres;
     std::vector<plane_desc> planes;

@@ -55,7 +55,7 @@ private:
 template <int N, int M, bool Watertight = false>
 class wide_accel final : public per_ray_accel<wide_accel<N, M, Watertight>, wide_accel_base> {
 public:
-    wide_accel(std::string name, ch04::bvh_builder builder, const wide_config& c)
+    wide_accel(std::string name, mesh_bvh_builder builder, const wide_config& c)
         : name_(std::move(name)), builder_(std::move(builder)), config_(c.collapse), any_nearest_(c.any_hit_nearest) {}
 
     std::string name() const override { return name_; }
@@ -65,10 +65,7 @@ public:
     void build(const scene& s) override {
         set_ = std::make_unique<ch01::triangle_set>(s.mesh);
         this->set_frame(ray_frame(s.mesh.bounds()));
-        std::vector<aabb> boxes(set_->size());
-        std::vector<vec3> centroids(set_->size());
-        for (std::size_t i = 0; i < boxes.size(); ++i) boxes[i] = set_->bounds(i), centroids[i] = boxes[i].centroid();
-        binary_ = builder_(boxes, centroids);
+        binary_ = builder_(s.mesh);
         tree_ = collapse<N, M>(binary_, s.mesh, config_);
         if constexpr (Watertight) {
             mesh_ = s.mesh;
@@ -153,7 +150,7 @@ private:
     }
 
     std::string name_;
-    ch04::bvh_builder builder_;
+    mesh_bvh_builder builder_;
     collapse_config config_;
     bool any_nearest_ = false;
     std::unique_ptr<ch01::triangle_set> set_;
@@ -167,7 +164,20 @@ private:
 
 }  // namespace
 
+// A box builder: the triangles' boxes (as chapter 01's triangle_set bounds them) and centroids handed to it.
 std::unique_ptr<wide_accel_base> make_accel(std::string name, ch04::bvh_builder builder, const wide_config& c) {
+    return make_accel_from_mesh(std::move(name), [builder = std::move(builder)](const triangle_mesh& mesh) {
+        std::vector<aabb> boxes(mesh.triangle_count());
+        std::vector<vec3> centroids(boxes.size());
+        for (std::size_t i = 0; i < boxes.size(); ++i) {
+            const auto t = mesh.triangle(i);
+            boxes[i] = aabb{}.grow(t[0]).grow(t[1]).grow(t[2]), centroids[i] = boxes[i].centroid();
+        }
+        return builder(boxes, centroids);
+    }, c);
+}
+
+std::unique_ptr<wide_accel_base> make_accel_from_mesh(std::string name, mesh_bvh_builder builder, const wide_config& c) {
     const int key = c.width * 100 + c.block;
     if (c.watertight) {
         switch (key) {

@@ -35,6 +35,10 @@ struct embree_config {
     // order, as the race writes them); 0 traces one ray at a time with rtcIntersect1 / rtcOccluded1.
     int packet_image_width = 0;
     int threads = 1;  // Embree's own build threads
+    // Embree's own instancing (chapter 10's yardstick): one Embree scene per mesh of scene.instances, one
+    // instance geometry per instance with its transform; hits report the flattened id and the instance. A
+    // scene without instances is one instance of its mesh. One ray at a time (no packets).
+    bool instanced = false;
     embree_call_probe* probe = nullptr;  // tests only: record MXCSR and tnear at every candidate hit
 };
 
