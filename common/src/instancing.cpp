@@ -277,6 +277,9 @@ instanced_meshes load_instanced(const std::filesystem::path& file, std::ostream*
             if (reader.more()) c[6] = reader.number_("the field of view");
             if (reader.more()) reader.fail("'camera' takes six or seven numbers");
             if (!(c[6] > 0.0f && c[6] < 180.0f)) reader.fail("the field of view must lie in (0, 180) degrees");
+            // The camera's basis needs a view direction not along +-y (its up).
+            if (c[0] == c[3] && c[2] == c[5])
+                reader.fail("the camera looks straight up or down, or at its own eye: move the eye off the vertical");
             if (camera) *camera = c;
         } else {
             reader.fail("unknown keyword '" + key + "' (mesh, instance, field, camera)");

@@ -3,6 +3,7 @@
 // its baseline costs kept in step; repeated, it rebuilds other subtrees; degenerate parameters do nothing.
 #include "flat_bvh_check.hpp"
 #include "strahl/ch05/sah.hpp"
+#include "mesh_boxes.hpp"
 #include "strahl/ch10/refit.hpp"
 #include "strahl/procedural.hpp"
 #include <catch2/catch.hpp>
@@ -11,21 +12,10 @@
 
 using namespace strahl;
 using namespace strahl::ch10;
+using test::boxes_of;
+using test::centroids_of;
 
 namespace {
-std::vector<aabb> boxes_of(const triangle_mesh& m) {
-    std::vector<aabb> b(m.triangle_count());
-    for (std::size_t i = 0; i < b.size(); ++i) {
-        const auto t = m.triangle(i);
-        b[i].grow(t[0]).grow(t[1]).grow(t[2]);
-    }
-    return b;
-}
-std::vector<vec3> centroids_of(const std::vector<aabb>& b) {
-    std::vector<vec3> c(b.size());
-    for (std::size_t i = 0; i < b.size(); ++i) c[i] = b[i].centroid();
-    return c;
-}
 ch04::bvh binned(std::span<const aabb> b, std::span<const vec3> c) { return ch05::build_sah_bvh_fast(b, c); }
 
 // The boxes' tree refit by hand (the solution's refit may not be compiled in: this test has no points).

@@ -5,6 +5,7 @@
 #include "nasty_rays.hpp"
 #include "strahl/ch05/accel.hpp"
 #include "strahl/ch05/sah.hpp"
+#include "mesh_boxes.hpp"
 #include "strahl/ch10/refit.hpp"
 #include "strahl/procedural.hpp"
 #include "strahl/rng.hpp"
@@ -13,21 +14,10 @@
 
 using namespace strahl;
 using namespace strahl::ch10;
+using test::boxes_of;
+using test::centroids_of;
 
 namespace {
-std::vector<aabb> boxes_of(const triangle_mesh& m) {
-    std::vector<aabb> b(m.triangle_count());
-    for (std::size_t i = 0; i < b.size(); ++i) {
-        const auto t = m.triangle(i);
-        b[i].grow(t[0]).grow(t[1]).grow(t[2]);
-    }
-    return b;
-}
-std::vector<vec3> centroids_of(const std::vector<aabb>& b) {
-    std::vector<vec3> c(b.size());
-    for (std::size_t i = 0; i < b.size(); ++i) c[i] = b[i].centroid();
-    return c;
-}
 // Every vertex pushed along a swirl: the tree's shape no longer fits, its boxes must still bound.
 triangle_mesh swirled(triangle_mesh m, float amount) {
     for (vec3& p : m.positions) {

@@ -5,6 +5,7 @@
 // as brute force over it.
 #include "bvh_rays.hpp"
 #include "exactness.hpp"
+#include "test_support.hpp"
 #include "strahl/ch10/accel.hpp"
 #include "strahl/instancing.hpp"
 #include "strahl/procedural.hpp"
@@ -174,4 +175,22 @@ TEST_CASE("ch10 two-level: bad updates are refused with a reason, the structure 
     CHECK_THROWS_AS(t.set_vertices(0, std::vector<vec3>(3), mesh_update::refit), std::invalid_argument);
     CHECK_THROWS_AS(t.set_vertices(9, {}, mesh_update::refit), std::invalid_argument);
     CHECK(disagreements(*a, s, rays_for(s.mesh.bounds(), 8, 300)) == 0);
+}
+
+TEST_CASE("ch10 two-level: the chapter's scene files read as their comments say", "[ch10]") {
+    const std::filesystem::path dir =
+        std::filesystem::path(STRAHL_TEST_DATA).parent_path().parent_path() / "chapters/10_two_level/scenes";
+    if (test::shared_scene("bunny.ply").empty()) {
+        WARN("skipped: ../shared/scenes is not beside this clone");
+        return;
+    }
+    const instanced_meshes field = load_instanced(dir / "bunny_field.scene");
+    CHECK(field.instances.size() == 36);
+    CHECK(field.triangle_count() == 36 * field.meshes[0].triangle_count());
+    if (test::under_sanitizers) return;  // Sponza: the release run reads it
+    const instanced_meshes sponza = load_instanced(dir / "sponza_teapots.scene");
+    CHECK(sponza.meshes.size() == 2);
+    CHECK(sponza.instances.size() == 49);
+    CHECK(sponza.triangle_count() == sponza.meshes[0].triangle_count() + 48 * sponza.meshes[1].triangle_count());
+    CHECK(sponza.names == std::vector<std::string>{"sponza", "teapot"});
 }

@@ -102,6 +102,8 @@ TEST_CASE("instancing: malformed scene files name the line and what is wrong", "
     CHECK_THAT(error_of("mesh tri tri.obj\nfield tri 0 3 1 1\n"), Catch::Contains("NX must be a whole number"));
     CHECK_THAT(error_of("mesh tri tri.obj\nfield tri 2.5 3 1 1\n"), Catch::Contains("whole number"));
     CHECK_THAT(error_of("mesh tri tri.obj\ninstance tri\ncamera 0 0 1 0 0 0 200\n"), Catch::Contains("field of view"));
+    CHECK_THAT(error_of("mesh tri tri.obj\ninstance tri\ncamera 1 2 3 1 2 3\n"), Catch::Contains("straight up or down"));
+    CHECK_THAT(error_of("mesh tri tri.obj\ninstance tri\ncamera 0 9 0 0 0 0\n"), Catch::Contains("straight up or down"));
     CHECK_THAT(error_of("mesh tri tri.obj\ninstance tri translate 1e11 0 0 scale 100\n"), Catch::Contains("beyond"));
     // Counts refused before the instances are made: 2^20 + 1 instances; 2^32 triangles.
     CHECK_THAT(error_of("mesh tri tri.obj\ninstance tri\nfield tri 1024 1024 1 1\n"),

@@ -87,7 +87,8 @@ inline constexpr std::uint64_t max_flattened_triangles = 64u << 20;
 //                                   a pseudo-random angle (from SEED, default 1), then TRANSFORM, then moved
 //                                   by (i DX, 0, j DZ)
 //   camera EX EY EZ LX LY LZ [FOV]  the camera's eye, the point it looks at, the vertical field of view in
-//                                   degrees (default: frame_camera of the scene's box)
+//                                   degrees (default: frame_camera of the scene's box); up is +y, so the
+//                                   eye may not lie straight above or below the point
 // TRANSFORM: words applied in the order written, the first to the mesh:
 //   translate X Y Z | scale S | scale X Y Z | rotate x|y|z DEGREES | matrix M00 M01 M02 M03 M10 ... M23
 // Errors (load_error naming the file and line): an unknown keyword, a wrong count or a malformed,
