@@ -369,5 +369,8 @@ TEST_CASE("ch16 exactness: every exact structure equals its oracle on an instanc
     // brute force (the race's oracle for them), which the release run checks.
     const scene s = builtin_scene("teapot_field");
     REQUIRE(s.instances);
-    check_exact_structures(s, 40, 30);
+    if (test::under_sanitizers)
+        check_exact_structures(s, 20, 16);  // every structure on 25,600 triangles: the release run traces more
+    else
+        check_exact_structures(s, 40, 30);
 }
