@@ -92,7 +92,7 @@ TEST_CASE("ch10 two-level: a field of instances answers as the instanced brute f
         REQUIRE(h.prim >= first[h.inst]);
         REQUIRE((h.inst + 1 == first.size() || h.prim < first[h.inst + 1]));
     }
-    CHECK(found > 50);
+    CHECK(found > rays.size() / 10);  // about one ray in six meets a teapot
 }
 
 TEST_CASE("ch10 two-level: mirrors, shears, extreme scales, far instances and exact overlaps", "[ch10]") {
