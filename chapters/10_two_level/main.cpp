@@ -6,6 +6,7 @@
 // the frame's primary rays, the twisting mesh's SAH cost; every two-level method's hits checked against the
 // rebuilt one's. Then a scene of many instances (10 million triangles and more), built and traced
 // instanced, its memory against its flattened copy's.
+#include "strahl/ch01/ray_sets.hpp"
 #include "strahl/ch03/accel.hpp"
 #include "strahl/ch05/accel.hpp"
 #include "strahl/ch10/accel.hpp"
@@ -40,13 +41,11 @@ std::pair<double, std::vector<hit>> trace(const accel& a, const std::vector<ray>
     return {t.milliseconds(), std::move(hits)};
 }
 
+// Chapter 01's primary rays through a camera of our own (the scene holds nothing else).
 std::vector<ray> camera_rays(const camera_desc& desc, int w, int h) {
-    const camera cam(desc, w, h);
-    std::vector<ray> rays;
-    rays.reserve(std::size_t(w) * h);
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x) rays.push_back(cam.pixel_ray(x, y));
-    return rays;
+    scene view;
+    view.camera = desc;
+    return ch01::primary_rays(view, w, h);
 }
 
 // Primary hits shaded by how squarely they face the ray (the flattened mesh names every triangle).
