@@ -1,0 +1,266 @@
+// Ray packets: P = V x K rays traced together, V vectors of K SIMD lanes, one ray per lane, in structure of
+// arrays. Every lane carries the per-ray terms of chapter 05's fast slab test (computed in float, as chapter
+// 13's wide walk computes them) and its own interval, so that one box test answers K rays, and a lane's
+// answer is the answer that ray would get alone.
+//   I. Wald, P. Slusallek, C. Benthin and M. Wagner, "Interactive rendering with coherent ray tracing",
+//   Computer Graphics Forum (Eurographics) 2001 (packets of SIMD width, the active mask);
+//   I. Wald, S. Boulos and P. Shirley, "Ray tracing deformable scenes using dynamic bounding volume
+//   hierarchies", ACM TOG 26(1), 2007 (large packets, the first active ray, the interval-arithmetic frustum).
+#pragma once
+#include "strahl/aabb.hpp"
+#include "strahl/ray.hpp"
+#include "strahl/simd.hpp"
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+namespace strahl::ch12 {
+
+// A tree's box in the form the per-lane set-up needs: its centre and an upper bound on its diagonal (the sum
+// of the extents), as chapter 13's wide_bvh keeps them.
+struct tree_frame {
+    aabb bounds;
+    vec3 centre{0.0f};
+    float diagonal = 0.0f;
+    explicit tree_frame(const aabb& b = {}) : bounds(b) {
+        if (b.is_empty()) return;
+        centre = b.centroid();
+        const vec3 e = b.extent();
+        diagonal = e.x + e.y + e.z;
+    }
+};
+
+// What one lane needs for the fast slab test, computed once per ray: chapter 13's wide_fast_slab set-up
+// (float arithmetic, widened by 2^-19 of |plane| + |org|: ch05::fast_slab's proof with room for float) and
+// wide_ray_slack. ok is false where the fast test cannot take the ray (a direction component zero,
+// subnormal, or so small that a plane's t overflows); such a ray leaves the packet and is traced alone.
+struct lane_terms {
+    float inv[3], org_near[3], org_far[3], slack;
+    bool ok = true;
+    lane_terms(const ray& r, const tree_frame& f) {
+        for (int a = 0; a < 3; ++a) {
+            const float i = 1.0f / r.dir[a], o = r.org[a];
+            const float span = std::max(std::fabs(f.bounds.min[a]), std::fabs(f.bounds.max[a])) + std::fabs(o);
+            const float eps = 0x1p-19f * span, toward = std::copysign(eps, i);
+            ok = ok && std::fabs(i) <= 0x1p100f && (span + eps) * std::fabs(i) <= 0x1p100f;
+            inv[a] = i;
+            org_near[a] = (o + toward) * i + 0x1p-126f;
+            org_far[a] = (o - toward) * i - 0x1p-126f;
+        }
+        const vec3 to = r.org - f.centre;
+        const float reach = (std::fabs(to.x) + std::fabs(to.y) + std::fabs(to.z)) + f.diagonal;
+        const float len = std::max(std::fabs(r.dir.x), std::max(std::fabs(r.dir.y), std::fabs(r.dir.z)));
+        slack = (reach * 0x1p-16f + 1e-5f * f.diagonal) / len * (1.0f + 0x1p-20f);
+        ok = ok && std::isfinite(slack);
+    }
+};
+
+// The packet. Lane j of vector v is ray v * K + j of the packet; `active` has a bit per lane still traced
+// (a lane that never held a ray, or whose ray was answered or handed to the single-ray walk, is clear).
+// t1 = tmax + slack is the far end of the box tests, kept up to date as hits shrink tmax.
+template <int K, int V = 1>
+struct alignas(64) ray_packet {
+    static constexpr int lanes = K, vectors = V, size = K * V;
+    using vf = simd::vfloat<K>;
+
+    alignas(64) float org[3][size], dir[3][size];
+    alignas(64) float inv[3][size], org_near[3][size], org_far[3][size];
+    alignas(64) float tmin[size], tmax[size], slack[size], t0[size], t1[size];
+    std::uint32_t ray_index[size];  // the ray's place in the batch
+    hit best[size];                 // closest hit so far
+    unsigned active[V];             // lane bits per vector
+    int octant = 0;                 // the sign bits of every active lane, where they all agree ...
+    bool coherent = true;           // ... which is when the whole packet can choose near planes once
+
+    // Frustum: the active lanes' extremes, for the interval-arithmetic test (frustum.hpp).
+    float inv_lo[3], inv_hi[3], near_hi[3], far_lo[3], t0_lo, t1_hi;
+
+    // Vector v of a field, one SIMD load.
+    static vf get(const float* field, int v) { return vf::load(field + v * K); }
+
+    // Empties the packet: no lane active.
+    void clear() {
+        for (int v = 0; v < V; ++v) active[v] = 0;
+    }
+    // Puts ray r (the batch's ray `index`) into lane `lane`, with its fast-slab terms.
+    void set(int lane, const ray& r, const lane_terms& l, std::uint32_t index) {
+        for (int a = 0; a < 3; ++a) {
+            org[a][lane] = r.org[a], dir[a][lane] = r.dir[a];
+            inv[a][lane] = l.inv[a], org_near[a][lane] = l.org_near[a], org_far[a][lane] = l.org_far[a];
+        }
+        tmin[lane] = r.tmin, tmax[lane] = r.tmax, slack[lane] = l.slack;
+        t0[lane] = r.tmin - l.slack, t1[lane] = r.tmax + l.slack;
+        ray_index[lane] = index;
+        active[lane / K] |= 1u << (lane % K);
+    }
+    // Lanes that hold no ray get a copy of an active lane's terms (never active): every SIMD operation on
+    // them is harmless, and the frustum's extremes are those of the active lanes. Then the signs, the
+    // octant, and the frustum's extremes.
+    void finish() {
+        int any = -1;
+        for (int i = 0; i < size && any < 0; ++i)
+            if ((active[i / K] >> (i % K)) & 1u) any = i;
+        if (any < 0) return;
+        for (int i = 0; i < size; ++i) {
+            if ((active[i / K] >> (i % K)) & 1u) continue;
+            for (int a = 0; a < 3; ++a) {
+                org[a][i] = org[a][any], dir[a][i] = dir[a][any], inv[a][i] = inv[a][any];
+                org_near[a][i] = org_near[a][any], org_far[a][i] = org_far[a][any];
+            }
+            tmin[i] = tmin[any], tmax[i] = tmax[any], slack[i] = slack[any], t0[i] = t0[any], t1[i] = t1[any];
+            ray_index[i] = invalid_id;
+        }
+        octant = -1;
+        coherent = true;
+        for (int i = 0; i < size; ++i) {
+            const int o = int(std::signbit(dir[0][i])) | int(std::signbit(dir[1][i])) << 1 | int(std::signbit(dir[2][i])) << 2;
+            if (octant < 0) octant = o;
+            coherent = coherent && o == octant;
+        }
+        // The frustum: per axis the range of 1 / d, the largest near-plane origin term and the smallest far one.
+        for (int a = 0; a < 3; ++a) {
+            inv_lo[a] = inv_hi[a] = inv[a][0], near_hi[a] = org_near[a][0], far_lo[a] = org_far[a][0];
+            for (int i = 1; i < size; ++i) {
+                inv_lo[a] = std::min(inv_lo[a], inv[a][i]), inv_hi[a] = std::max(inv_hi[a], inv[a][i]);
+                near_hi[a] = std::max(near_hi[a], org_near[a][i]), far_lo[a] = std::min(far_lo[a], org_far[a][i]);
+            }
+        }
+        t0_lo = t0[0];
+        for (int i = 1; i < size; ++i) t0_lo = std::min(t0_lo, t0[i]);
+        update_t1_hi();
+    }
+    void update_t1_hi() {
+        t1_hi = -inf;
+        for (int i = 0; i < size; ++i) t1_hi = std::max(t1_hi, t1[i]);
+    }
+    bool empty() const {
+        unsigned any = 0;
+        for (int v = 0; v < V; ++v) any |= active[v];
+        return any == 0;
+    }
+};
+
+// K rays in SIMD registers, what the lane tests read: vector v of a packet (load), or K rays picked from a
+// packet by their indices (gather: the large packets' active-ray lists).
+template <int K>
+struct lane_rays {
+    using vf = simd::vfloat<K>;
+    vf org[3], dir[3], inv[3], org_near[3], org_far[3], tmin, tmax, t0, t1;
+    simd::vmask<K> negative[3];  // the direction's sign bit on each axis, per lane
+};
+
+template <int K, int V>
+[[gnu::always_inline]] inline lane_rays<K> load(const ray_packet<K, V>& p, int v) {
+    using P = ray_packet<K, V>;
+    lane_rays<K> r;
+    for (int a = 0; a < 3; ++a) {
+        r.org[a] = P::get(p.org[a], v), r.dir[a] = P::get(p.dir[a], v), r.inv[a] = P::get(p.inv[a], v);
+        r.org_near[a] = P::get(p.org_near[a], v), r.org_far[a] = P::get(p.org_far[a], v);
+        r.negative[a] = simd::as_int(r.dir[a]) < simd::vint<K>(0);
+    }
+    r.tmin = P::get(p.tmin, v), r.tmax = P::get(p.tmax, v), r.t0 = P::get(p.t0, v), r.t1 = P::get(p.t1, v);
+    return r;
+}
+
+// Lanes 0..n-1 from the packet's rays ids[0..n-1]; lanes n..K-1 repeat ids[0] (their answers are ignored).
+template <int K, int V>
+[[gnu::always_inline]] inline lane_rays<K> gather(const ray_packet<K, V>& p, const std::uint16_t* ids, int n) {
+    using vf = simd::vfloat<K>;
+    alignas(64) float f[21][K];
+    for (int j = 0; j < K; ++j) {
+        const int i = ids[j < n ? j : 0];
+        for (int a = 0; a < 3; ++a) {
+            f[a][j] = p.org[a][i], f[3 + a][j] = p.dir[a][i], f[6 + a][j] = p.inv[a][i];
+            f[9 + a][j] = p.org_near[a][i], f[12 + a][j] = p.org_far[a][i];
+        }
+        f[15][j] = p.tmin[i], f[16][j] = p.tmax[i], f[17][j] = p.t0[i], f[18][j] = p.t1[i];
+    }
+    lane_rays<K> r;
+    for (int a = 0; a < 3; ++a) {
+        r.org[a] = vf::load(f[a]), r.dir[a] = vf::load(f[3 + a]), r.inv[a] = vf::load(f[6 + a]);
+        r.org_near[a] = vf::load(f[9 + a]), r.org_far[a] = vf::load(f[12 + a]);
+        r.negative[a] = simd::as_int(r.dir[a]) < simd::vint<K>(0);
+    }
+    r.tmin = vf::load(f[15]), r.tmax = vf::load(f[16]), r.t0 = vf::load(f[17]), r.t1 = vf::load(f[18]);
+    return r;
+}
+
+// The fast slab test of chapter 05, lanes being rays: one box (its corners broadcast) against K rays; each
+// lane computes what ch05::fast_slab::entry computes for its ray, bit for bit (plane_t: fused where the
+// processor has FMA, as there). Returns the lanes that enter the box within [t0, t1], and in `entry` where.
+// Coherent packets (every lane in one octant, the sign bits `octant`) choose each axis's near and far plane
+// once; the others choose per lane, by the lane's sign bits. Exercise 12.1 (packet_tests.cpp).
+template <bool Coherent, int K>
+simd::vmask<K> packet_box(const lane_rays<K>& r, const float* bmin, const float* bmax, int octant,
+                          simd::vfloat<K>& entry);
+
+// Exercise 12.2 (packet_tests.cpp): the interval-arithmetic frustum of a coherent packet against one box:
+// true only where no active lane of the packet can enter the box (packet_box would give no lane).
+template <int K, int V>
+bool frustum_misses(const ray_packet<K, V>& p, const float* bmin, const float* bmax);
+
+// The triangle test of exercise 01.3 (Moeller-Trumbore from the corner v0 and the edges e1 = v1 - v0,
+// e2 = v2 - v0), lanes being rays against one triangle: each lane computes exactly what the scalar test
+// computes, operation for operation (chapter 13's block test with the roles of rays and triangles swapped),
+// so its t, u and v are the scalar test's bits. Returns the lanes that hit with t in (tmin, tmax).
+template <int K>
+[[gnu::always_inline]] inline unsigned packet_triangle(const lane_rays<K>& r, const float* v0, const float* e1,
+                                                       const float* e2, simd::vfloat<K>& t, simd::vfloat<K>& u,
+                                                       simd::vfloat<K>& w) {
+    using vf = simd::vfloat<K>;
+    const vf e1x(e1[0]), e1y(e1[1]), e1z(e1[2]), e2x(e2[0]), e2y(e2[1]), e2z(e2[2]);
+    const vf &dx = r.dir[0], &dy = r.dir[1], &dz = r.dir[2];
+    // Step 1, the determinant: p = d x e2, det = e1 . p.
+    const vf px = dy * e2z - e2y * dz, py = dz * e2x - e2z * dx, pz = dx * e2y - e2x * dy;
+    const vf det = e1x * px + e1y * py + e1z * pz;
+    simd::vmask<K> hit = det != vf(0.0f);
+    const vf inv_det = vf(1.0f) / det;
+    // Step 2, u = s . p / det with s = org - v0.
+    const vf sx = r.org[0] - vf(v0[0]), sy = r.org[1] - vf(v0[1]), sz = r.org[2] - vf(v0[2]);
+    const vf bu = (sx * px + sy * py + sz * pz) * inv_det;
+    hit = hit & (bu >= vf(0.0f)) & (bu <= vf(1.0f));
+    // Step 3, v = d . q / det with q = s x e1.
+    const vf qx = sy * e1z - e1y * sz, qy = sz * e1x - e1z * sx, qz = sx * e1y - e1x * sy;
+    const vf bv = (dx * qx + dy * qy + dz * qz) * inv_det;
+    hit = hit & (bv >= vf(0.0f)) & (bu + bv <= vf(1.0f));
+    // Step 4, t = e2 . q / det, inside (tmin, tmax).
+    const vf bt = (e2x * qx + e2y * qy + e2z * qz) * inv_det;
+    hit = hit & (bt > r.tmin) & (bt < r.tmax);
+    t = bt, u = bu, w = bv;
+    return simd::movemask(hit);
+}
+
+// The closest-hit step of chapter 01 (record_closest) on the lanes in `bits`: the nearer t wins, the lower
+// id at equal t; the winner's tmax becomes the next float above t (and t1 with it).
+// Lane j is the packet's ray at(j): v * K + j for a loaded vector, ids[j] for a gathered one.
+template <int K, int V, class At>
+[[gnu::always_inline]] inline void packet_record(ray_packet<K, V>& p, unsigned bits, At at, std::uint32_t id,
+                                                 simd::vfloat<K> t, simd::vfloat<K> u, simd::vfloat<K> w) {
+    alignas(64) float ts[K], us[K], ws[K];
+    t.store(ts), u.store(us), w.store(ws);
+    for (; bits != 0; bits &= bits - 1) {
+        const int j = std::countr_zero(bits), i = at(j);
+        if (!closer(ts[j], id, p.best[i])) continue;
+        p.best[i] = hit{ts[j], id, us[j], ws[j], invalid_id};
+        p.tmax[i] = std::nextafter(ts[j], inf);
+        p.t1[i] = p.tmax[i] + p.slack[i];
+    }
+}
+
+}  // namespace strahl::ch12
+
+namespace strahl::ch12 {
+
+// The three exercises called on their own, out of line (for the tests): 12.1 for K = 8 and 16, 12.2 for
+// packets of 16 x 1 and 16 x 4 rays, 12.3 with K = 16 and bits[g] the lane bits of the g-th call.
+template <bool Coherent, int K>
+simd::vmask<K> packet_box_out_of_line(const lane_rays<K>& r, const float* bmin, const float* bmax, int octant,
+                                      simd::vfloat<K>& entry);
+template <int K, int V>
+bool frustum_misses_out_of_line(const ray_packet<K, V>& p, const float* bmin, const float* bmax);
+int partition_out_of_line(std::uint16_t* ids, int count, const std::vector<unsigned>& bits);
+
+}  // namespace strahl::ch12

@@ -1,0 +1,323 @@
+// The packet tracers behind the accel interface (accel.hpp). Per packet: each ray checked as tree_query.hpp
+// checks it (an empty interval is a miss; loose primitives first); a ray that no packet can take (not
+// placeable, or a direction the fast slab test refuses) is traced alone by chapter 05's fast walk, which
+// gives the same answers; the others fill the lanes, and the packet goes down the tree.
+//
+// Included once, at the end of packet_tests.cpp (exercises 12.1 to 12.3), so that the walks are compiled in
+// the same translation unit as the student's box test, frustum test and partition, and inline them.
+#pragma once
+#include "strahl/ch01/primitive_sets.hpp"
+#include "strahl/ch05/fast_traverse.hpp"
+#include "strahl/ch05/sah.hpp"
+#include "strahl/ch12/accel.hpp"
+#include "strahl/ch12/binary_walks.hpp"
+#include "strahl/ch12/partition_walk.hpp"
+#include "strahl/ch12/wide_packet_walk.hpp"
+#include "strahl/ch13/wide_bvh.hpp"
+#include "strahl/tree_query.hpp"
+#include <memory>
+#include <stdexcept>
+
+namespace strahl::ch12 {
+
+namespace {
+
+// counting, plus the active lanes of every node visit (binary_walks.hpp's count_lanes).
+template <int K>
+struct lane_counting : counting {
+    std::uint64_t visits[K + 1] = {};
+    std::uint64_t lane_sum = 0, node_visits = 0;
+    void lanes(int active, int) { ++visits[active], lane_sum += std::uint64_t(active), ++node_visits; }
+};
+
+// A triangle of a binary leaf, in prim_ids order: what the lane test reads (edges as exercise 01.3
+// computes them), 40 bytes.
+struct leaf_triangle {
+    float v0[3], e1[3], e2[3];
+    std::uint32_t id;
+};
+
+template <walk_kind W, int K, int V>
+class packet_accel final : public packet_accel_base {
+    static_assert(W == walk_kind::masked || W == walk_kind::wide ? V == 1 : true);
+
+public:
+    packet_accel(std::string name, const packet_config& c) : name_(std::move(name)), config_(c) {}
+
+    std::string name() const override { return name_; }
+    const packet_config& config() const override { return config_; }
+    std::size_t batch_alignment() const override {
+        return config_.image_width > 0 ? std::size_t(config_.tile_h) * std::size_t(config_.image_width) : 1;
+    }
+
+    void build(const scene& s) override {
+        set_ = std::make_unique<ch01::triangle_set>(s.mesh);
+        frame_ = ray_frame(s.mesh.bounds());
+        std::vector<aabb> boxes(s.mesh.triangle_count());
+        std::vector<vec3> centroids(boxes.size());
+        for (std::size_t i = 0; i < boxes.size(); ++i) {
+            const auto t = s.mesh.triangle(i);
+            boxes[i] = aabb{}.grow(t[0]).grow(t[1]).grow(t[2]), centroids[i] = boxes[i].centroid();
+        }
+        ch05::sah_build_params params;
+        params.method = ch05::sah_method::binned, params.bins = 16;
+        binary_ = ch05::build_sah_bvh_fast(boxes, centroids, params);
+        box_ = tree_frame(binary_.bounds);
+        tris_.clear();
+        if constexpr (W == walk_kind::wide) {
+            ch13::collapse_config cc;
+            cc.method = ch13::collapse_method::optimal;
+            wide_ = ch13::collapse<8, 4>(binary_, s.mesh, cc);
+        } else {
+            tris_.resize(binary_.prim_ids.size());
+            for (std::size_t k = 0; k < tris_.size(); ++k) {
+                const auto v = s.mesh.triangle(binary_.prim_ids[k]);
+                const vec3 e1 = v[1] - v[0], e2 = v[2] - v[0];  // as exercise 01.3 computes them
+                for (int a = 0; a < 3; ++a) tris_[k].v0[a] = v[0][a], tris_[k].e1[a] = e1[a], tris_[k].e2[a] = e2[a];
+                tris_[k].id = binary_.prim_ids[k];
+            }
+        }
+    }
+    std::optional<double> sah_cost() const override {
+        if (!set_) return std::nullopt;
+        if constexpr (W == walk_kind::wide) return wide_.stats.sah;
+        else return ch04::sah_tree_cost(binary_, 1.0f, 1.0f);
+    }
+    // The tree walked, the triangles its leaves read, and the binary tree and triangle set that single rays
+    // and loose primitives use.
+    std::size_t memory_bytes() const override {
+        return binary_.memory_bytes() + binary_.loose.size() * 4 + tris_.size() * sizeof(leaf_triangle) +
+               wide_.memory_bytes() + (set_ ? set_->memory_bytes() : 0);
+    }
+
+    void intersect(std::span<const ray> rays, std::span<hit> hits) const override {
+        not_counting s;
+        run<false>(rays, hits.data(), nullptr, s, nullptr);
+    }
+    void occluded(std::span<const ray> rays, std::span<std::uint8_t> blocked) const override {
+        not_counting s;
+        run<true>(rays, nullptr, blocked.data(), s, nullptr);
+    }
+    std::optional<counter_values> intersect_counted(std::span<const ray> rays, std::span<hit> hits) const override {
+        return closest_lanes(rays, hits, nullptr).counts;
+    }
+    std::optional<counter_values> occluded_counted(std::span<const ray> rays, std::span<std::uint8_t> blocked) const override {
+        return any_lanes(rays, blocked, nullptr).counts;
+    }
+    lane_stats closest_lanes(std::span<const ray> rays, std::span<hit> hits, std::vector<float>* per_ray) const override {
+        lane_counting<K> s;
+        run<false>(rays, hits.data(), nullptr, s, per_ray);
+        return stats_of(s);
+    }
+    lane_stats any_lanes(std::span<const ray> rays, std::span<std::uint8_t> blocked, std::vector<float>* per_ray) const override {
+        lane_counting<K> s;
+        run<true>(rays, nullptr, blocked.data(), s, per_ray);
+        return stats_of(s);
+    }
+
+private:
+    lane_stats stats_of(const lane_counting<K>& s) const {
+        lane_stats l;
+        l.counts = s.values();
+        l.visits.assign(s.visits, s.visits + K + 1);
+        l.packets = packets_;
+        return l;
+    }
+
+    // Far origins moved to the scene first (ray_frame.hpp), as per_ray_accel does for every structure.
+    template <bool Any, class Stats>
+    void run(std::span<const ray> rays, hit* hits, std::uint8_t* blocked, Stats& stats, std::vector<float>* per_ray) const {
+        packets_ = 0;
+        if (per_ray) per_ray->assign(rays.size(), -1.0f);
+        if (!set_) {
+            for (std::size_t i = 0; i < rays.size(); ++i) Any ? void(blocked[i] = 0) : void(hits[i] = hit{});
+            return;
+        }
+        if (!frame_.moves_any(rays)) [[likely]]
+            return trace<Any>(rays, hits, blocked, stats, per_ray);
+        std::vector<ray> moved(rays.size());
+        std::vector<float> t0(rays.size());
+        for (std::size_t i = 0; i < rays.size(); ++i) moved[i] = frame_.moved(rays[i], t0[i]);
+        trace<Any>(moved, hits, blocked, stats, per_ray);
+        if constexpr (!Any)
+            for (std::size_t i = 0; i < rays.size(); ++i) hits[i] = ray_frame::moved_back(hits[i], t0[i]);
+    }
+
+    template <bool Any, class Stats>
+    void trace(std::span<const ray> rays, hit* hits, std::uint8_t* blocked, Stats& stats, std::vector<float>* per_ray) const {
+        auto p = std::make_unique<ray_packet<K, V>>();
+        for_each_packet(rays.size(), config_, [&](const std::uint32_t* ids, int count) {
+            p->clear();
+            for (int lane = 0; lane < count; ++lane) {
+                const std::uint32_t i = ids[lane];
+                const ray& q = rays[i];
+                lane_terms l(q, box_);
+                if (!(q.tmin < q.tmax) || !placeable(q) || !l.ok || !binary_.loose.empty()) {
+                    // Alone: empty intervals, rays no tree can place, directions the fast test refuses; and
+                    // every ray of a scene with loose primitives (rare: non-finite triangles).
+                    if constexpr (Any) blocked[i] = single_any(q, stats) ? 1 : 0;
+                    else hits[i] = single_closest(q, stats);
+                    continue;
+                }
+                stats.ray();
+                p->set(lane, q, l, i);
+                p->best[lane] = hit{};
+            }
+            if (p->empty()) return;
+            p->finish();
+            unsigned held[V];
+            for (int v = 0; v < V; ++v) held[v] = p->active[v];
+            std::uint64_t before = 0, visits_before = 0;
+            if constexpr (requires { stats.lane_sum; }) before = stats.lane_sum, visits_before = stats.node_visits;
+            ++packets_;
+            if (p->coherent) walk<Any, true>(*p, stats);
+            else walk<Any, false>(*p, stats);
+            float used = -1.0f;
+            if constexpr (requires { stats.lane_sum; })
+                if (stats.node_visits > visits_before)
+                    used = float(double(stats.lane_sum - before) / double(stats.node_visits - visits_before) / K);
+            for (int k = 0; k < K * V; ++k) {
+                if (!((held[k / K] >> (k % K)) & 1u)) continue;
+                const std::uint32_t i = p->ray_index[k];
+                if constexpr (Any) blocked[i] = p->best[k].found() ? 1 : 0;
+                else hits[i] = p->best[k];
+                if (per_ray) (*per_ray)[i] = used;
+            }
+        });
+    }
+
+    // The leaf test on a packet's lanes: closest hit records (chapter 01's rule, per lane); any hit marks
+    // the lane answered and takes it out of the packet.
+    template <bool Any, class Stats>
+    [[gnu::always_inline]] void test_triangle(ray_packet<K, V>& p, const lane_rays<K>& r, unsigned& lanes, auto at,
+                                              const float* v0, const float* e1, const float* e2, std::uint32_t id,
+                                              Stats& stats) const {
+        stats.prim_test(std::popcount(lanes));
+        simd::vfloat<K> t, u, w;
+        const unsigned b = packet_triangle(r, v0, e1, e2, t, u, w) & lanes;
+        if (b == 0) return;
+        if constexpr (Any) {
+            for (unsigned x = b; x != 0; x &= x - 1) {
+                const int i = at(std::countr_zero(x));
+                p.active[i / K] &= ~(1u << (i % K));
+                p.best[i].prim = id;
+            }
+            lanes &= ~b;
+        } else {
+            packet_record(p, b, at, id, t, u, w);
+        }
+    }
+
+    template <bool Any, bool Coherent, class Stats>
+    void walk(ray_packet<K, V>& p, Stats& stats) const {
+        if constexpr (W == walk_kind::wide) {
+            const auto leaf = [&](const lane_rays<K>& r, unsigned lanes, auto at, std::uint32_t ref) {
+                const ch13::triangle_block<4>* b = &wide_.blocks[ch13::leaf_first(ref)];
+                for (std::uint32_t k = ch13::leaf_blocks(ref); k-- > 0 && lanes != 0; ++b)
+                    for (int i = 0; i < 4 && lanes != 0; ++i) {
+                        if (i > 0 && b->id[i] == b->id[i - 1]) break;  // lanes past the leaf's end repeat its last
+                        const float v0[3] = {b->v0[0][i], b->v0[1][i], b->v0[2][i]};
+                        const float e1[3] = {b->e1[0][i], b->e1[1][i], b->e1[2][i]};
+                        const float e2[3] = {b->e2[0][i], b->e2[1][i], b->e2[2][i]};
+                        test_triangle<Any>(p, r, lanes, at, v0, e1, e2, b->id[i], stats);
+                    }
+                if constexpr (!Any) p.update_t1_hi();
+            };
+            wide_packet_walk<!Any, Coherent>(wide_, p, stats, leaf);
+        } else {
+            const auto leaf = [&](const lane_rays<K>& r, unsigned lanes, auto at, std::uint32_t first, std::uint32_t count) {
+                for (std::uint32_t k = 0; k < count && lanes != 0; ++k) {
+                    const leaf_triangle& t = tris_[first + k];
+                    test_triangle<Any>(p, r, lanes, at, t.v0, t.e1, t.e2, t.id, stats);
+                }
+                if constexpr (!Any && V > 1) p.update_t1_hi();
+            };
+            if constexpr (W == walk_kind::masked) masked_walk<Coherent>(binary_, p, stats, leaf);
+            else if constexpr (W == walk_kind::ranged) ranged_walk<Coherent>(binary_, p, stats, leaf);
+            else partition_walk<Coherent>(binary_, p, stats, leaf);
+        }
+    }
+
+    // A ray traced alone: chapter 05's fast walk over the same binary tree (its exact answers).
+    template <class Stats>
+    hit single_closest(const ray& q, Stats& stats) const {
+        return tree_closest(*set_, binary_.loose, q, stats, [&](ray& r, auto&& leaf) {
+            ch05::fast_traverse(binary_, r, stats, [&](std::uint32_t first, std::uint32_t count) {
+                return leaf(binary_.prim_ids.data() + first, count);
+            });
+        });
+    }
+    template <class Stats>
+    bool single_any(const ray& q, Stats& stats) const {
+        return tree_any(*set_, binary_.loose, q, stats, [&](ray& r, auto&& leaf) {
+            ch05::fast_traverse(binary_, r, stats, [&](std::uint32_t first, std::uint32_t count) {
+                return leaf(binary_.prim_ids.data() + first, count);
+            });
+        });
+    }
+
+    std::string name_;
+    packet_config config_;
+    std::unique_ptr<ch01::triangle_set> set_;
+    ray_frame frame_;
+    ch04::bvh binary_;
+    tree_frame box_;
+    std::vector<leaf_triangle> tris_;
+    ch13::wide_bvh<8, 4> wide_;
+    mutable std::uint64_t packets_ = 0;  // (the counting queries only; not thread-safe, as those are not)
+};
+
+}  // namespace
+
+std::unique_ptr<packet_accel_base> make_accel(std::string name, const packet_config& c) {
+    const int tile = c.tile_w * c.tile_h;
+    if (c.tile_w < 1 || c.tile_h < 1 || tile % c.lanes != 0)
+        throw std::invalid_argument("packet tracer: a " + std::to_string(c.tile_w) + "x" + std::to_string(c.tile_h) +
+                                    " tile is no whole number of " + std::to_string(c.lanes) + "-lane vectors");
+    const int vectors = tile / c.lanes;
+    const auto key = [](walk_kind w, int k, int v) { return int(w) * 10000 + k * 100 + v; };
+    using wk = walk_kind;
+    switch (key(c.walk, c.lanes, vectors)) {
+    case key(wk::masked, 4, 1): return std::make_unique<packet_accel<wk::masked, 4, 1>>(std::move(name), c);
+    case key(wk::masked, 8, 1): return std::make_unique<packet_accel<wk::masked, 8, 1>>(std::move(name), c);
+    case key(wk::masked, 16, 1): return std::make_unique<packet_accel<wk::masked, 16, 1>>(std::move(name), c);
+    case key(wk::ranged, 16, 4): return std::make_unique<packet_accel<wk::ranged, 16, 4>>(std::move(name), c);
+    case key(wk::ranged, 16, 16): return std::make_unique<packet_accel<wk::ranged, 16, 16>>(std::move(name), c);
+    case key(wk::partition, 16, 4): return std::make_unique<packet_accel<wk::partition, 16, 4>>(std::move(name), c);
+    case key(wk::partition, 16, 16): return std::make_unique<packet_accel<wk::partition, 16, 16>>(std::move(name), c);
+    case key(wk::wide, 8, 1): return std::make_unique<packet_accel<wk::wide, 8, 1>>(std::move(name), c);
+    case key(wk::wide, 16, 1): return std::make_unique<packet_accel<wk::wide, 16, 1>>(std::move(name), c);
+    default:
+        throw std::invalid_argument(std::string("packet tracer: the ") + to_string(c.walk) + " walk is not built for " +
+                                    std::to_string(c.lanes) + " lanes and " + std::to_string(c.tile_w) + "x" +
+                                    std::to_string(c.tile_h) + " tiles (built: masked 2x2/4, 4x2/8, 4x4/16; ranged and "
+                                    "partition 8x8 or 16x16 with 16 lanes; wide 4x2/8, 4x4/16)");
+    }
+}
+
+}  // namespace strahl::ch12
+
+namespace strahl::ch12 {
+
+// Out-of-line entries to the three exercises for the tests, which call them on their own (the exercises
+// themselves are forced inline into the walks).
+template <bool Coherent, int K>
+simd::vmask<K> packet_box_out_of_line(const lane_rays<K>& r, const float* bmin, const float* bmax, int octant,
+                                      simd::vfloat<K>& entry) {
+    return packet_box<Coherent>(r, bmin, bmax, octant, entry);
+}
+template <int K, int V>
+bool frustum_misses_out_of_line(const ray_packet<K, V>& p, const float* bmin, const float* bmax) {
+    return frustum_misses(p, bmin, bmax);
+}
+int partition_out_of_line(std::uint16_t* ids, int count, const std::vector<unsigned>& bits) {
+    return partition_active<16>(ids, count, [&](int at) { return bits.at(std::size_t(at / 16)); });
+}
+template simd::vmask<8> packet_box_out_of_line<true, 8>(const lane_rays<8>&, const float*, const float*, int, simd::vfloat<8>&);
+template simd::vmask<8> packet_box_out_of_line<false, 8>(const lane_rays<8>&, const float*, const float*, int, simd::vfloat<8>&);
+template simd::vmask<16> packet_box_out_of_line<true, 16>(const lane_rays<16>&, const float*, const float*, int, simd::vfloat<16>&);
+template simd::vmask<16> packet_box_out_of_line<false, 16>(const lane_rays<16>&, const float*, const float*, int, simd::vfloat<16>&);
+template bool frustum_misses_out_of_line<16, 1>(const ray_packet<16, 1>&, const float*, const float*);
+template bool frustum_misses_out_of_line<16, 4>(const ray_packet<16, 4>&, const float*, const float*);
+
+}  // namespace strahl::ch12

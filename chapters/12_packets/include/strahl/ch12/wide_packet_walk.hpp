@@ -1,0 +1,94 @@
+// A packet of K rays through chapter 13's wide BVH: at each node, the K rays against each of its N child
+// boxes in turn (K lanes, one box broadcast), as Embree's hybrid kernels do; the children that any ray
+// enters are visited nearest first (by the smallest entry distance over the rays that enter), each with the
+// lanes that entered it. Leaves: every triangle of the leaf's blocks against the K rays.
+//   I. Wald, C. Benthin and S. Boulos, "Getting rid of packets", IEEE RT 2008 (wide nodes);
+//   I. Wald, S. Woop, C. Benthin, G. S. Johnson and M. Ernst, "Embree: a kernel framework for efficient CPU
+//   ray tracing", ACM TOG 33(4), 2014 (packets through wide nodes, section 5).
+#pragma once
+#include "strahl/ch04/bvh.hpp"
+#include "strahl/ch12/binary_walks.hpp"
+#include "strahl/ch12/packet.hpp"
+#include "strahl/ch13/wide_bvh.hpp"
+#include <bit>
+
+namespace strahl::ch12 {
+
+// Which child a node hands the walk first (chapter 13's visit_order): nearest for closest hit, stored for
+// any hit (no sorting).
+template <bool Nearest, bool Coherent, int K, int N, int M, class Stats, class Leaf>
+void wide_packet_walk(const ch13::wide_bvh<N, M>& tree, ray_packet<K, 1>& p, Stats& stats, Leaf&& leaf) {
+    struct entry {
+        std::uint32_t ref;
+        unsigned lanes;
+        float t;
+    };
+    entry stack[ch04::bvh_max_depth * (N - 1) + 2];
+    int top = 0;
+    const auto at = [](int j) { return j; };
+    std::uint32_t ref = tree.root_ref;
+    unsigned lanes = p.active[0];
+    lane_rays<K> r = load(p, 0);
+    if (tree.nodes.empty() && !ch13::is_leaf(ref)) return;
+    for (;;) {
+        if (!ch13::is_leaf(ref)) {
+            const ch13::wide_node<N>& n = tree.nodes[ref];
+            stats.node_visit();
+            stats.box_test(std::popcount(lanes) * N);
+            count_lanes(stats, std::popcount(lanes), K);
+            entry hits[N];
+            int count = 0;
+            for (int c = 0; c < N; ++c) {
+                if (!n.used(c)) continue;
+                const float bmin[3] = {n.lo[0][c], n.lo[1][c], n.lo[2][c]};
+                const float bmax[3] = {n.hi[0][c], n.hi[1][c], n.hi[2][c]};
+                simd::vfloat<K> t;
+                const unsigned in = simd::movemask(packet_box<Coherent>(r, bmin, bmax, p.octant, t)) & lanes;
+                if (in == 0) continue;
+                float nearest = inf;
+                if constexpr (Nearest) {
+                    alignas(64) float ts[K];
+                    t.store(ts);
+                    for (unsigned b = in; b != 0; b &= b - 1) nearest = std::min(nearest, ts[std::countr_zero(b)]);
+                }
+                // Insertion by distance, farthest first (stored order: appended).
+                int j = count++;
+                if constexpr (Nearest)
+                    for (; j > 0 && hits[j - 1].t <= nearest; --j) hits[j] = hits[j - 1];
+                hits[j] = {n.child[c], in, nearest};
+            }
+            if (count > 0) {
+                if constexpr (Nearest) {
+                    for (int j = 0; j + 1 < count; ++j) stack[top++] = hits[j];
+                    ref = hits[count - 1].ref, lanes = hits[count - 1].lanes;
+                } else {
+                    for (int j = count - 1; j > 0; --j) stack[top++] = hits[j];
+                    ref = hits[0].ref, lanes = hits[0].lanes;
+                }
+                continue;
+            }
+        } else {
+            leaf(r, lanes, at, ref);
+            if (p.active[0] == 0) return;  // any hit: every ray answered
+            r = load(p, 0);  // tmax shrunk by the hits
+        }
+        // Pop the next child whose lanes are still in play and whose nearest entry still lies within reach.
+        for (;;) {
+            if (top == 0) return;
+            const entry e = stack[--top];
+            unsigned keep = e.lanes & p.active[0];
+            if (keep == 0) continue;
+            if constexpr (Nearest) {
+                alignas(64) float t1[K];
+                r.t1.store(t1);
+                float reach = -inf;
+                for (unsigned b = keep; b != 0; b &= b - 1) reach = std::max(reach, t1[std::countr_zero(b)]);
+                if (!(e.t <= reach)) continue;
+            }
+            ref = e.ref, lanes = keep;
+            break;
+        }
+    }
+}
+
+}  // namespace strahl::ch12

@@ -1,0 +1,79 @@
+// Exercises 12.1 the packet's box test (3 points), 12.2 the frustum test (4 points) and 12.3 the active-ray
+// partition (4 points). Read: I. Wald, S. Boulos and P. Shirley, "Ray tracing deformable scenes using
+// dynamic bounding volume hierarchies", ACM TOG 26(1), 2007, section 4 (the interval-arithmetic frustum);
+// R. Overbeck, R. Ramamoorthi and W. R. Mark, "Large ray packets for real-time Whitted ray tracing", IEEE RT
+// 2008, section 3 (the partition); chapter 05's slab_test.hpp (fast_slab, the test 12.1 puts on lanes).
+#include "strahl/ch05/slab_test.hpp"
+#include "strahl/ch12/packet.hpp"
+#include "strahl/ch12/partition_walk.hpp"
+
+namespace strahl::ch12 {
+
+// 12.1: per axis the near and the far plane, broadcast (chosen once for a coherent packet, per lane by the
+// sign bits otherwise), their t as ch05::plane_t computes it, the running maximum of the entries and minimum
+// of the exits, as fast_slab::entry does.
+template <bool Coherent, int K>
+[[gnu::always_inline]] inline simd::vmask<K> packet_box(const lane_rays<K>& r, const float* bmin, const float* bmax,
+                                                        int octant, simd::vfloat<K>& entry) {
+    using vf = simd::vfloat<K>;
+    vf lo = r.t0, hi = r.t1;
+    for (int a = 0; a < 3; ++a) {
+        vf near_plane, far_plane;
+        if constexpr (Coherent) {
+            const bool down = (octant >> a) & 1;
+            near_plane = vf(down ? bmax[a] : bmin[a]), far_plane = vf(down ? bmin[a] : bmax[a]);
+        } else {
+            near_plane = simd::select(r.negative[a], vf(bmax[a]), vf(bmin[a]));
+            far_plane = simd::select(r.negative[a], vf(bmin[a]), vf(bmax[a]));
+        }
+        vf near, far;
+        if constexpr (ch05::fused_plane_default)
+            near = simd::fmsub(near_plane, r.inv[a], r.org_near[a]), far = simd::fmsub(far_plane, r.inv[a], r.org_far[a]);
+        else
+            near = near_plane * r.inv[a] - r.org_near[a], far = far_plane * r.inv[a] - r.org_far[a];
+        lo = simd::max(near, lo);  // near > lo ? near : lo
+        hi = simd::min(far, hi);   // far < hi ? far : hi
+    }
+    entry = lo;
+    return lo <= hi;
+}
+
+// 12.2: a lane's near t on an axis, plane * inv - org_near, is at least the smaller of the plane times either
+// end of the packet's range of inv, less the largest org_near (rounding is monotonic, so this holds for the
+// computed values too, computed the same way); its far t at most the larger product less the smallest
+// org_far. The packet misses if the largest lower bound of the entries exceeds the smallest upper bound of
+// the exits.
+template <int K, int V>
+bool frustum_misses(const ray_packet<K, V>& p, const float* bmin, const float* bmax) {
+    constexpr bool fused = ch05::fused_plane_default;
+    float lo = p.t0_lo, hi = p.t1_hi;
+    for (int a = 0; a < 3; ++a) {
+        const bool down = (p.octant >> a) & 1;
+        const float near = down ? bmax[a] : bmin[a], far = down ? bmin[a] : bmax[a];
+        const float n = std::min(ch05::plane_t<fused>(near, p.inv_lo[a], p.near_hi[a]),
+                                 ch05::plane_t<fused>(near, p.inv_hi[a], p.near_hi[a]));
+        const float f = std::max(ch05::plane_t<fused>(far, p.inv_lo[a], p.far_lo[a]),
+                                 ch05::plane_t<fused>(far, p.inv_hi[a], p.far_lo[a]));
+        lo = std::max(lo, n);
+        hi = std::min(hi, f);
+    }
+    return lo > hi;
+}
+
+// 12.3: K rays a call (enters(at): bits for ids[at .. at + K - 1]); each ray that enters is swapped to the
+// next place of the front part. A swap only touches places already tested: the next call's rays are intact.
+template <int K, class Enters>
+[[gnu::always_inline]] inline int partition_active(std::uint16_t* ids, int count, Enters&& enters) {
+    int front = 0;
+    for (int at = 0; at < count; at += K) {
+        unsigned bits = enters(at);
+        if (count - at < K) bits &= (1u << (count - at)) - 1;
+        for (; bits != 0; bits &= bits - 1) std::swap(ids[front++], ids[at + std::countr_zero(bits)]);
+    }
+    return front;
+}
+
+}  // namespace strahl::ch12
+
+// The packet tracers compiled here, with the three functions above inlined into them.
+#include "strahl/ch12/packet_accel_impl.hpp"
