@@ -251,11 +251,6 @@ int run(int argc, const char* const* argv) {
             const std::size_t linear_limit = std::max<std::size_t>(256, std::size_t(5e8 / double(std::max<std::size_t>(1, s.mesh.triangle_count()))));
             std::map<std::string, reference> other_refs;  // by oracle
             for (const accel_entry& e : entries) {
-                const bool packet = e.name.find("packet8") != std::string::npos;
-                if (packet && kind != ray_kind::primary) {
-                    progress.add();
-                    continue;
-                }
                 std::unique_ptr<accel> a = e.make();
                 race_row r;
                 r.scene = scene_name;
@@ -288,8 +283,8 @@ int run(int argc, const char* const* argv) {
                     r.ray_set += "~";  // marks a sampled row in the table
                 }
                 const reference& compare = sampled.empty() ? base : sub;
-                // Shadow rays ask for any hit only; Embree's packets are timed on primary rays, closest hit.
-                if (!packet) r.any = measure_any(*a, traced, compare.any, rules);
+                // Shadow rays ask for any hit only.
+                r.any = measure_any(*a, traced, compare.any, rules);
                 if (kind != ray_kind::shadow) r.closest = measure_closest(*a, traced, compare.closest, rules);
                 rows.push_back(r);
                 progress.add();

@@ -1,6 +1,6 @@
 // Embree, the race's baseline and independent oracle: its medium and high quality builds find the same
 // primitive as brute force on all but a handful of rays (its own triangle test rounds differently), and its
-// 4x2-packet path gives the same primitives as its single-ray path. The counts go to the log (WARN).
+// packet and stream paths answer as its single-ray path. The counts go to the log (WARN).
 #include "strahl/procedural.hpp"
 #include "strahl/race/brute_force.hpp"
 #include "strahl/race/embree_accel.hpp"
@@ -10,6 +10,8 @@
 #include "reference.hpp"
 #include "test_support.hpp"
 #include <catch2/catch.hpp>
+#include <algorithm>
+#include <stdexcept>
 
 using namespace strahl;
 using namespace strahl::race;
@@ -62,6 +64,34 @@ void check_embree(const scene& s, int width, int height, double allowed_percent)
     }
 }
 
+// Embree's packet and stream rows, and the calls behind them (embree_config::calls), with and without rows.
+struct tiled_row {
+    const char* name;
+    embree_config::calls queries;
+    bool coherent;
+    std::size_t tile_rows;  // a tile's height: batch_alignment() is this many image rows
+};
+const tiled_row tiled_rows[] = {
+    {"embree-medium-packet8", embree_config::calls::packet8, false, 2},
+    {"embree-medium-packet8-coherent", embree_config::calls::packet8, true, 2},
+    {"embree-medium-packet16-coherent", embree_config::calls::packet16, true, 4},
+    {"embree-medium-stream-coherent", embree_config::calls::stream, true, 8},
+};
+
+// Rays whose answers a and b differ on: closest (another primitive, hit against miss, or t further apart
+// than 1e-4 relative: Embree's packet kernels may round t otherwise) or any.
+std::size_t differing(std::span<const hit> a, std::span<const hit> b) {
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < a.size(); ++i)
+        n += !agrees(a[i], b[i], false) || (a[i].found() && std::abs(a[i].t - b[i].t) > 1e-4f * std::abs(b[i].t));
+    return n;
+}
+std::size_t differing(std::span<const std::uint8_t> a, std::span<const std::uint8_t> b) {
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < a.size(); ++i) n += a[i] != b[i];
+    return n;
+}
+
 }  // namespace
 
 TEST_CASE("ch16 embree: available where found, refused clearly where not", "[ch16][embree]") {
@@ -106,9 +136,11 @@ TEST_CASE("ch16 embree: an empty scene misses everything", "[ch16][embree]") {
     scene empty;
     empty.name = "empty";
     const std::vector<ray> rays = primary_rays(builtin_scene("teapot"), 8, 6);
-    for (const char* name : {"embree-medium", "embree-high"}) {
+    std::vector<std::string> names = {"embree-medium", "embree-high"};
+    for (const tiled_row& row : tiled_rows) names.push_back(row.name);
+    for (const std::string& name : names) {
         INFO(name);
-        const std::unique_ptr<accel> a = make_built(name, empty);
+        const std::unique_ptr<accel> a = make_built(name, empty, registry_options{1, 8});
         std::vector<hit> hits(rays.size());
         std::vector<std::uint8_t> blocked(rays.size(), 7);
         a->intersect(rays, hits);
@@ -120,37 +152,104 @@ TEST_CASE("ch16 embree: an empty scene misses everything", "[ch16][embree]") {
     }
 }
 
-TEST_CASE("ch16 embree: 4x2 packets give the single-ray path's primitives on primary rays", "[ch16][embree]") {
+// Every packet and stream row against embree-medium (rtcIntersect1 / rtcOccluded1) on the same rays, both
+// queries, within the tolerance of the tests against brute force (1% of a set's rays): on the race's three
+// ray sets (the secondary sets, one ray per primary hit, end in partial tiles), cut into the race's thread
+// chunks; on a batch that is not whole rows of tiles; on batches holding rays Embree cannot take, which
+// must get brute force's own answers; and without rows (width 0: tiles of consecutive rays).
+TEST_CASE("ch16 embree: packet and stream rows answer as rtcIntersect1 does, both queries, every ray set, "
+          "partial tiles and rays Embree cannot take", "[ch16][embree]") {
     if (skipped_without_embree()) return;
+    const int width = 48, height = 36;
     for (const char* scene_name : {"teapot", "soup", "teapot_stadium"}) {
         const scene s = builtin_scene(scene_name);
-        const int width = 48, height = 36;
-        const registry_options packets{1, width};
+        const std::vector<test::reference_set>& sets = test::shared_reference_sets(s, width, height);
         const std::unique_ptr<accel> single = make_built("embree-medium", s);
-        const std::unique_ptr<accel> packet = make_built("embree-medium-packet8", s, packets);
-        CHECK(packet->name() == "embree-medium-packet8");
-        const std::vector<ray> rays = primary_rays(s, width, height);
-        std::vector<hit> one(rays.size()), eight(rays.size(), hit{-1.0f, 12345u, 0.0f, 0.0f, invalid_id});
-        single->intersect(rays, one);
-        packet->intersect(rays, eight);
-        std::size_t differ = 0, hits = 0;
-        for (std::size_t i = 0; i < rays.size(); ++i) {
-            hits += one[i].found();
-            if (one[i].prim != eight[i].prim && differ++ < 5)
-                UNSCOPED_INFO(scene_name << ": pixel " << i % width << ", " << i / width << ": single ray prim "
-                                         << one[i].prim << ", packet prim " << eight[i].prim);
+        brute_force exact;
+        exact.build(s);
+        // The batches: each ray set whole; 5 rows and 13 rays of the primary rays from the image's 15th row on
+        // (partial tiles in both directions); and the primary and diffuse rays with every 37th ray made one
+        // Embree cannot take (tmin < 0 or a huge origin, alternately).
+        struct batch {
+            std::string what;
+            std::vector<ray> rays;
+            int threads = 2;
+        };
+        std::vector<batch> batches;
+        for (const test::reference_set& r : sets) batches.push_back({to_string(r.kind) + " rays", r.rays});
+        const auto row_15 = sets[0].rays.begin() + 14 * width;
+        batches.push_back({"a batch of 5 rows and 13 rays", std::vector<ray>(row_15, row_15 + 5 * width + 13), 1});
+        for (const std::size_t k : {std::size_t(0), std::size_t(1)}) {
+            batch b{to_string(sets[k].kind) + " rays, every 37th one Embree cannot take", sets[k].rays, 1};
+            for (std::size_t i = 5; i < b.rays.size(); i += 37) {
+                if (i / 37 % 2) b.rays[i].tmin = -1e-3f;
+                else b.rays[i].org.x += 1e19f;
+            }
+            batches.push_back(std::move(b));
         }
-        INFO(scene_name << ": " << differ << " of " << rays.size() << " primary rays differ");
-        CHECK(hits > 0);
-        CHECK(differ == 0);
+        for (const tiled_row& row : tiled_rows)
+            for (const int rows_of : {width, 0}) {
+                INFO(scene_name << ", " << row.name << (rows_of ? "" : " without rows (width 0)"));
+                std::unique_ptr<accel> a;
+                if (rows_of) {
+                    a = make_built(row.name, s, registry_options{1, rows_of});
+                    CHECK(a->name() == row.name);
+                    CHECK(a->batch_alignment() == row.tile_rows * std::size_t(width));
+                } else {
+                    embree_config c;
+                    c.queries = row.queries, c.coherent = row.coherent;
+                    a = make_embree_accel(c);
+                    a->build(s);
+                }
+                CHECK_FALSE(a->exact());
+                for (const batch& b : batches) {
+                    INFO(b.what << " (" << b.rays.size() << ")");
+                    std::vector<hit> want(b.rays.size()), got(b.rays.size(), hit{-1.0f, 12345u, 0.0f, 0.0f, invalid_id});
+                    std::vector<std::uint8_t> want_any(b.rays.size()), got_any(b.rays.size(), 7);
+                    single->intersect(b.rays, want);
+                    single->occluded(b.rays, want_any);
+                    trace_closest(*a, b.rays, got, b.threads);
+                    trace_any(*a, b.rays, got_any, b.threads);
+                    const std::size_t closest_diff = differing(got, want), any_diff = differing(got_any, want_any);
+                    if (closest_diff || any_diff)
+                        WARN(scene_name << ", " << row.name << (rows_of ? "" : " (width 0)") << ", " << b.what << ": "
+                             << closest_diff << " closest and " << any_diff << " any hits of " << b.rays.size()
+                             << " differ from rtcIntersect1's");
+                    const double allowed = 0.01 * double(b.rays.size());
+                    CHECK(double(closest_diff) <= allowed);
+                    CHECK(double(any_diff) <= allowed);
+                    CHECK(test::found(got) > 0);
+                    CHECK(std::count_if(got_any.begin(), got_any.end(), [](std::uint8_t x) { return x > 1; }) == 0);
+                    if (b.what.find("cannot take") == std::string::npos) continue;
+                    // The rays Embree cannot take: brute force's answers, bit for bit.
+                    std::size_t fallback_diff = 0, fallback_found = 0;
+                    for (std::size_t i = 5; i < b.rays.size(); i += 37) {
+                        hit h;
+                        std::uint8_t blocked = 7;
+                        exact.intersect(std::span(b.rays).subspan(i, 1), std::span(&h, 1));
+                        exact.occluded(std::span(b.rays).subspan(i, 1), std::span(&blocked, 1));
+                        fallback_found += h.found();
+                        fallback_diff += !agrees(got[i], h, true) || got_any[i] != blocked;
+                    }
+                    CHECK(fallback_found > 0);
+                    CHECK(fallback_diff == 0);
+                }
+            }
     }
-    // Without a packet width, there is no packet entry.
-    for (const accel_entry& e : registered_accels()) CHECK(e.name != "embree-medium-packet8");
+    // Without a packet width, there are no packet or stream entries; nor instanced packets.
+    for (const accel_entry& e : registered_accels()) {
+        CHECK(e.name.find("packet") == std::string::npos);
+        CHECK(e.name.find("stream") == std::string::npos);
+    }
+    embree_config instanced_packets;
+    instanced_packets.instanced = true, instanced_packets.queries = embree_config::calls::packet8;
+    CHECK_THROWS_AS(make_embree_accel(instanced_packets), std::invalid_argument);
 }
 
 // The yardstick: Embree's queries run with flush-to-zero and denormals-are-zero set (Embree's documentation;
 // without them its traversal ran 1.3 to 2.1 times slower here), and with a tnear that is not a denormal
-// (tnear = nextafter(0) was). The probe's filter function reads MXCSR and tnear inside Embree's traversal.
+// (tnear = nextafter(0) was), in every way the wrapper calls Embree. The probe's filter function reads MXCSR,
+// tnear and the context's flags inside Embree's traversal.
 TEST_CASE("ch16 embree: called as its documentation asks (FTZ and DAZ on inside Embree, tnear never a denormal, "
           "MXCSR restored after)", "[ch16][embree]") {
     CHECK_FALSE(denormals_are_flushed());  // the course's own arithmetic runs with IEEE denormals
@@ -162,27 +261,49 @@ TEST_CASE("ch16 embree: called as its documentation asks (FTZ and DAZ on inside 
     if (skipped_without_embree()) return;
     const scene s = builtin_scene("teapot");
     const int width = 32, height = 24;
-    const std::vector<ray> rays = primary_rays(s, width, height);
-    for (const int packet_width : {0, width}) {
-        INFO((packet_width ? "rtcIntersect8 packets" : "rtcIntersect1 and rtcOccluded1"));
+    // Every way the wrapper calls Embree, both queries, on the three ray sets (the secondary ones end in
+    // partial tiles).
+    struct call {
+        const char* what;
+        embree_config::calls queries;
+        bool coherent;
+    };
+    using c = embree_config::calls;
+    for (const call& k : {call{"rtcIntersect1, rtcOccluded1", c::single, false},
+                          call{"rtcIntersect8, rtcOccluded8", c::packet8, false},
+                          call{"rtcIntersect8, rtcOccluded8, coherent", c::packet8, true},
+                          call{"rtcIntersect16, rtcOccluded16, coherent", c::packet16, true},
+                          call{"rtcIntersect1M, rtcOccluded1M, coherent", c::stream, true}}) {
         embree_call_probe probe;
         embree_config config;
-        config.packet_image_width = packet_width;
+        config.packet_image_width = k.queries == c::single ? 0 : width;
+        config.queries = k.queries, config.coherent = k.coherent;
         config.probe = &probe;
         const std::unique_ptr<accel> a = make_embree_accel(config);
         a->build(s);
-        std::vector<hit> hits(rays.size());
-        std::vector<std::uint8_t> blocked(rays.size());
-        a->intersect(rays, hits);
-        CHECK_FALSE(denormals_are_flushed());  // restored after the batch
-        if (!packet_width) a->occluded(rays, blocked);
-        CHECK_FALSE(denormals_are_flushed());
-        std::size_t found = 0;
-        for (const hit& h : hits) found += h.found();
-        REQUIRE(found > 0);
-        CHECK(probe.candidate_hits.load() >= found);
-        CHECK(probe.without_ftz_daz.load() == 0);
-        CHECK(probe.denormal_tnear.load() == 0);
+        for (const test::reference_set& r : test::shared_reference_sets(s, width, height)) {
+            INFO(k.what << ", " << to_string(r.kind) << " rays");
+            std::vector<hit> hits(r.rays.size());
+            std::vector<std::uint8_t> blocked(r.rays.size());
+            const std::uint64_t before = probe.candidate_hits.load();
+            a->intersect(r.rays, hits);
+            CHECK_FALSE(denormals_are_flushed());  // restored after the batch
+            const std::uint64_t after_closest = probe.candidate_hits.load();
+            a->occluded(r.rays, blocked);
+            CHECK_FALSE(denormals_are_flushed());
+            std::size_t found = 0, any = 0;
+            for (const hit& h : hits) found += h.found();
+            for (const std::uint8_t b : blocked) any += b;
+            REQUIRE(found > 0);
+            REQUIRE(any > 0);
+            // Every hit found and every ray blocked went through the filter, inside Embree's traversal.
+            CHECK(after_closest - before >= found);
+            CHECK(probe.candidate_hits.load() - after_closest >= any);
+            CHECK(probe.without_ftz_daz.load() == 0);
+            CHECK(probe.denormal_tnear.load() == 0);
+            // The coherent rows tell Embree so in every call, the others in none.
+            CHECK(probe.coherent.load() == (k.coherent ? probe.candidate_hits.load() : 0));
+        }
     }
 }
 
@@ -208,8 +329,11 @@ TEST_CASE("ch16 embree: hits exactly at tmin or tmax are not hits, as for the co
     exact.intersect(rays, want);
     const std::vector<bool> expected = {false, false, true, false, true};
     for (std::size_t i = 0; i < rays.size(); ++i) REQUIRE(want[i].found() == expected[i]);
-    for (const char* name : {"embree-medium", "embree-high"}) {
-        const std::unique_ptr<accel> a = make_built(name, s);
+    // The packet and stream rows too, on rows of 2 rays: 5 rays make partial tiles.
+    std::vector<std::string> names = {"embree-medium", "embree-high"};
+    for (const tiled_row& row : tiled_rows) names.push_back(row.name);
+    for (const std::string& name : names) {
+        const std::unique_ptr<accel> a = make_built(name, s, registry_options{1, 2});
         std::vector<hit> got(rays.size());
         std::vector<std::uint8_t> blocked(rays.size(), 7);
         a->intersect(rays, got);

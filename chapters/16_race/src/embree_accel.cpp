@@ -46,11 +46,11 @@ const embree_report& embree_configuration() {
 #include "strahl/instancing.hpp"
 #include <cmath>
 #include <embree3/rtcore.h>
-#include <algorithm>
 #include <iostream>
 #include <mutex>
 #include <sstream>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace strahl::race {
@@ -75,12 +75,16 @@ void probe_filter(const RTCFilterFunctionNArguments* args) {
         probe->candidate_hits.fetch_add(1, std::memory_order_relaxed);
         if (!denormals_are_flushed()) probe->without_ftz_daz.fetch_add(1, std::memory_order_relaxed);
         if (std::fpclassify(tnear) == FP_SUBNORMAL) probe->denormal_tnear.fetch_add(1, std::memory_order_relaxed);
+        if (args->context && args->context->flags == RTC_INTERSECT_CONTEXT_FLAG_COHERENT)
+            probe->coherent.fetch_add(1, std::memory_order_relaxed);
     }
 }
 
 class embree_accel final : public accel {
 public:
     explicit embree_accel(const embree_config& c) : config_(c) {
+        if (c.instanced && c.queries != embree_config::calls::single)
+            throw std::invalid_argument("Embree's instanced rows trace one ray at a time (no packets or streams)");
         const std::string options = "threads=" + std::to_string(c.threads > 0 ? c.threads : 0);
         const denormals_flushed flushed;  // (so that Embree's start-up check finds FTZ and DAZ set)
         device_ = rtcNewDevice(options.c_str());
@@ -97,11 +101,20 @@ public:
                         : config_.build_quality == q::low ? "embree-low"
                                                           : "embree-medium";
         if (config_.instanced) n += "-instanced";
-        return config_.packet_image_width > 0 ? n + "-packet8" : n;
+        using c = embree_config::calls;
+        n += config_.queries == c::packet8    ? "-packet8"
+             : config_.queries == c::packet16 ? "-packet16"
+             : config_.queries == c::stream   ? "-stream"
+                                              : "";
+        return config_.coherent ? n + "-coherent" : n;
     }
     bool exact() const override { return false; }
+    // The packet and stream calls: whole rows of tiles (consecutive rays where there are no rows), so that
+    // the race's thread chunks cut no tile.
     std::size_t batch_alignment() const override {
-        return config_.packet_image_width > 0 ? 2 * std::size_t(config_.packet_image_width) : 1;
+        if (config_.queries == embree_config::calls::single) return 1;
+        const tile_shape t = tile();
+        return config_.packet_image_width > 0 ? t.height * std::size_t(config_.packet_image_width) : t.width;
     }
 
     void build(const scene& s) override {
@@ -138,12 +151,13 @@ public:
     void intersect(std::span<const ray> rays, std::span<hit> hits) const override {
         const denormals_flushed flushed;
         RTCIntersectContext context;
-        rtcInitIntersectContext(&context);
-        const int w = config_.packet_image_width;
-        if (w > 0 && w % 4 == 0 && rays.size() % std::size_t(2 * w) == 0 &&
-            std::all_of(rays.begin(), rays.end(), embree_takes)) {
-            intersect_tiles(rays, hits, &context);
-            return;
+        init(context);
+        using c = embree_config::calls;
+        switch (config_.queries) {
+        case c::packet8: return trace_tiles<embree_packet<8, true>>(rays, hits, &context);
+        case c::packet16: return trace_tiles<embree_packet<16, true>>(rays, hits, &context);
+        case c::stream: return trace_tiles<embree_stream<64, true>>(rays, hits, &context);
+        case c::single: break;
         }
         for (std::size_t i = 0; i < rays.size(); ++i) {
             if (!embree_takes(rays[i])) {
@@ -161,7 +175,14 @@ public:
     void occluded(std::span<const ray> rays, std::span<std::uint8_t> blocked) const override {
         const denormals_flushed flushed;
         RTCIntersectContext context;
-        rtcInitIntersectContext(&context);
+        init(context);
+        using c = embree_config::calls;
+        switch (config_.queries) {
+        case c::packet8: return trace_tiles<embree_packet<8, false>>(rays, blocked, &context);
+        case c::packet16: return trace_tiles<embree_packet<16, false>>(rays, blocked, &context);
+        case c::stream: return trace_tiles<embree_stream<64, false>>(rays, blocked, &context);
+        case c::single: break;
+        }
         for (std::size_t i = 0; i < rays.size(); ++i) {
             if (!embree_takes(rays[i])) {
                 fallback().occluded(rays.subspan(i, 1), blocked.subspan(i, 1));
@@ -265,32 +286,140 @@ private:
         return hit{tfar, prim, u, v, invalid_id};
     }
 
-    // rtcIntersect8 on 4x2 pixel tiles: rays x..x+3 of rows y and y+1 of a scanline-ordered image.
-    void intersect_tiles(std::span<const ray> rays, std::span<hit> hits, RTCIntersectContext* context) const {
-        const std::size_t w = std::size_t(config_.packet_image_width), rows = rays.size() / w;
-        alignas(32) int valid[8];
-        for (int& x : valid) x = -1;
-        for (std::size_t y = 0; y < rows; y += 2)
-            for (std::size_t x = 0; x < w; x += 4) {
-                alignas(32) RTCRayHit8 p;
-                std::size_t index[8];
-                for (int lane = 0; lane < 8; ++lane) {
-                    index[lane] = (y + lane / 4) * w + x + lane % 4;
-                    const RTCRayHit one = to_embree(rays[index[lane]]);
-                    p.ray.org_x[lane] = one.ray.org_x; p.ray.org_y[lane] = one.ray.org_y; p.ray.org_z[lane] = one.ray.org_z;
-                    p.ray.dir_x[lane] = one.ray.dir_x; p.ray.dir_y[lane] = one.ray.dir_y; p.ray.dir_z[lane] = one.ray.dir_z;
-                    p.ray.tnear[lane] = one.ray.tnear; p.ray.tfar[lane] = one.ray.tfar;
-                    p.ray.time[lane] = 0.0f; p.ray.mask[lane] = 0xFFFFFFFFu; p.ray.id[lane] = unsigned(lane);
-                    p.ray.flags[lane] = 0;
-                    p.hit.geomID[lane] = RTC_INVALID_GEOMETRY_ID;
-                    p.hit.instID[0][lane] = RTC_INVALID_GEOMETRY_ID;
-                }
-                rtcIntersect8(valid, scene_, context, &p);
-                for (int lane = 0; lane < 8; ++lane)
-                    hits[index[lane]] = from_embree(p.ray.tfar[lane], p.hit.geomID[lane], p.hit.primID[lane],
-                                                    p.hit.u[lane], p.hit.v[lane]);
+    // One packet call's rays in Embree's structure-of-arrays layout (RTCRayHit8/16 for closest hits,
+    // RTCRay8/16 for any hits), and its valid mask: -1 for a lane set, 0 for the others. The layout is
+    // zeroed once, so that an invalid lane holds zeros or an earlier tile's ray, never garbage.
+    template <int N, bool Closest>
+    struct embree_packet {
+        static constexpr std::size_t lanes = N;
+        using rays_n = std::conditional_t<N == 8, RTCRay8, RTCRay16>;
+        using layout = std::conditional_t<Closest, std::conditional_t<N == 8, RTCRayHit8, RTCRayHit16>, rays_n>;
+        alignas(64) int lane_mask[N];
+        layout p{};
+
+        rays_n& rays() {
+            if constexpr (Closest) return p.ray;
+            else return p;
+        }
+        void clear() {
+            for (int& m : lane_mask) m = 0;
+        }
+        void set(std::size_t lane, const ray& r) {
+            RTCRay one;
+            to_embree(r, one);
+            rays_n& q = rays();
+            q.org_x[lane] = one.org_x; q.org_y[lane] = one.org_y; q.org_z[lane] = one.org_z;
+            q.dir_x[lane] = one.dir_x; q.dir_y[lane] = one.dir_y; q.dir_z[lane] = one.dir_z;
+            q.tnear[lane] = one.tnear; q.tfar[lane] = one.tfar;
+            q.time[lane] = 0.0f; q.mask[lane] = 0xFFFFFFFFu; q.id[lane] = unsigned(lane); q.flags[lane] = 0;
+            if constexpr (Closest) {
+                p.hit.geomID[lane] = RTC_INVALID_GEOMETRY_ID;
+                p.hit.instID[0][lane] = RTC_INVALID_GEOMETRY_ID;
             }
+            lane_mask[lane] = -1;
+        }
+        bool valid(std::size_t lane) const { return lane_mask[lane] == -1; }
+        void trace(RTCScene scene, RTCIntersectContext* context) {
+            if constexpr (Closest && N == 8) rtcIntersect8(lane_mask, scene, context, &p);
+            else if constexpr (Closest) rtcIntersect16(lane_mask, scene, context, &p);
+            else if constexpr (N == 8) rtcOccluded8(lane_mask, scene, context, &p);
+            else rtcOccluded16(lane_mask, scene, context, &p);
+        }
+        void get(std::size_t lane, hit& h) const {
+            h = from_embree(p.ray.tfar[lane], p.hit.geomID[lane], p.hit.primID[lane], p.hit.u[lane], p.hit.v[lane]);
+        }
+        void get(std::size_t lane, std::uint8_t& blocked) const { blocked = p.tfar[lane] == -inf ? 1 : 0; }
+    };
+
+    // One stream call's rays, Embree's single-ray structures one after another (RTCRayHit for closest hits,
+    // RTCRay for any hits): the lanes set, in lane order, and nothing for the others (a stream has no mask);
+    // slot[lane] is a lane's place in the stream, -1 for a lane not set.
+    template <int M, bool Closest>
+    struct embree_stream {
+        static constexpr std::size_t lanes = M;
+        using element = std::conditional_t<Closest, RTCRayHit, RTCRay>;
+        element stream[M];
+        int slot[M];
+        unsigned count = 0;
+
+        void clear() {
+            count = 0;
+            for (int& k : slot) k = -1;
+        }
+        void set(std::size_t lane, const ray& r) {
+            if constexpr (Closest) stream[count] = to_embree(r);
+            else to_embree(r, stream[count]);
+            slot[lane] = int(count++);
+        }
+        bool valid(std::size_t lane) const { return slot[lane] >= 0; }
+        void trace(RTCScene scene, RTCIntersectContext* context) {
+            if (count == 0) return;
+            if constexpr (Closest) rtcIntersect1M(scene, context, stream, count, sizeof(element));
+            else rtcOccluded1M(scene, context, stream, count, sizeof(element));
+        }
+        void get(std::size_t lane, hit& h) const {
+            const RTCRayHit& e = stream[slot[lane]];
+            h = from_embree(e.ray.tfar, e.hit.geomID, e.hit.primID, e.hit.u, e.hit.v);
+        }
+        void get(std::size_t lane, std::uint8_t& blocked) const { blocked = stream[slot[lane]].tfar == -inf ? 1 : 0; }
+    };
+
+    // The context of every call: Embree's default, and the coherent flag where the configuration asks for it.
+    void init(RTCIntersectContext& context) const {
+        rtcInitIntersectContext(&context);
+        if (config_.coherent) context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
     }
+
+    // A tile of the packet and stream calls, in rays: 4x2 (packet8), 4x4 (packet16), 8x8 (stream). Without
+    // rows (packet_image_width 0) a tile is one row of as many consecutive rays.
+    struct tile_shape {
+        std::size_t width, height;
+    };
+    tile_shape tile() const {
+        using c = embree_config::calls;
+        const tile_shape t = config_.queries == c::packet16 ? tile_shape{4, 4}
+                             : config_.queries == c::stream ? tile_shape{8, 8}
+                                                            : tile_shape{4, 2};
+        return config_.packet_image_width > 0 ? t : tile_shape{t.width * t.height, 1};
+    }
+
+    // The packet and stream calls, one per tile: the batch's rays are rows of packet_image_width rays, cut
+    // into tiles of consecutive rows, left to right, then top to bottom. Batch is one call's rays in
+    // Embree's layout (embree_packet, embree_stream); Result is hit (closest) or std::uint8_t (any).
+    // A tile that runs past the end of a row or of the batch (a batch that is not whole rows of tiles: the
+    // secondary rays, one per primary hit, or a thread's last chunk) is a partial one: its missing lanes
+    // are invalid. So is a lane whose ray Embree cannot take (embree_takes): brute force answers it.
+    template <class Batch, class Result>
+    void trace_tiles(std::span<const ray> rays, std::span<Result> results, RTCIntersectContext* context) const {
+        const tile_shape t = tile();
+        static_assert(Batch::lanes == 8 || Batch::lanes == 16 || Batch::lanes == 64);
+        const std::size_t n = rays.size();
+        const std::size_t w = config_.packet_image_width > 0 ? std::size_t(config_.packet_image_width) : t.width;
+        Batch batch;
+        std::size_t index[Batch::lanes];
+        for (std::size_t y = 0; y * w < n; y += t.height)
+            for (std::size_t x = 0; x < w && y * w + x < n; x += t.width) {
+                // 1. The tile's lanes: lane k is ray (x + k % tile width, y + k / tile width) of the rows.
+                batch.clear();
+                for (std::size_t lane = 0; lane < Batch::lanes; ++lane) {
+                    const std::size_t column = x + lane % t.width, i = (y + lane / t.width) * w + column;
+                    index[lane] = i;
+                    if (column >= w || i >= n) continue;
+                    if (embree_takes(rays[i])) batch.set(lane, rays[i]);
+                    else answer_by_fallback(rays.subspan(i, 1), results.subspan(i, 1));
+                }
+                // 2. One call for the tile, 3. its valid lanes' answers back in the course's form.
+                batch.trace(scene_, context);
+                for (std::size_t lane = 0; lane < Batch::lanes; ++lane)
+                    if (batch.valid(lane)) batch.get(lane, results[index[lane]]);
+            }
+        // A library built without 16-wide kernels or without packets refuses the calls; a refused call
+        // answers nothing, so it must not pass for misses.
+        if (const RTCError e = rtcGetDeviceError(device_); e != RTC_ERROR_NONE)
+            throw std::runtime_error("Embree: a packet or stream call failed (error " + std::to_string(int(e)) + ")");
+    }
+    void answer_by_fallback(std::span<const ray> r, std::span<hit> h) const { fallback().intersect(r, h); }
+    void answer_by_fallback(std::span<const ray> r, std::span<std::uint8_t> b) const { fallback().occluded(r, b); }
 
     // Brute force over Embree's own copy of the triangles, for the rays Embree cannot take (embree_takes);
     // made on first need, so that Embree's build and memory stay Embree's.

@@ -12,10 +12,12 @@
 #include "strahl/ch09/accel.hpp"
 #include "strahl/ch10/accel.hpp"
 #include "strahl/ch11/steps.hpp"
+#include "strahl/ch12/accel.hpp"
 #include "strahl/ch13/accel.hpp"
 #include "strahl/ch15/accel.hpp"
 #include <algorithm>
 #include <optional>
+#include <tuple>
 #include <stdexcept>
 
 namespace strahl::race {
@@ -58,6 +60,16 @@ accel_entry wide(std::string name, std::string description, int width, int block
               return ch05::build_sah_bvh_fast(b, centroids, sah(ch05::sah_method::binned, 16));
           });
     return {name, "13", std::move(description), [name, source, c] { return ch13::make_accel(name, source, c); }};
+}
+// Chapter 12: a packet tracer, rays grouped in tiles of the race's image (registry_options::packet_width).
+accel_entry packets(ch12::walk_kind walk, int lanes, int tile_w, int tile_h, int image_width) {
+    const ch12::packet_config c{walk, lanes, tile_w, tile_h, image_width};
+    const std::string name = std::string("ch12-") + ch12::to_string(walk) + std::to_string(lanes) + "-" +
+                             std::to_string(tile_w) + "x" + std::to_string(tile_h);
+    const std::string tree = walk == ch12::walk_kind::wide ? "chapter 13's 8-wide tree (optimal collapse)"
+                                                           : "chapter 05's binned SAH tree";
+    return {name, "12", "packets: " + ch12::describe(c) + ", " + tree,
+            [name, c] { return std::unique_ptr<accel>(ch12::make_accel(name, c)); }};
 }
 // Chapter 13's wide walk over another chapter's tree: N-wide nodes (optimal collapse), blocks of M.
 ch13::wide_config wide_optimal(int width, int block) {
@@ -127,6 +139,9 @@ std::vector<accel_entry> registered_accels(const registry_options& o) {
          [] { return std::unique_ptr<accel>(ch10::make_accel()); }, false, "ch10-brute-instanced"},
         ch11_step(ch11::step::virtual_calls), ch11_step(ch11::step::variant), ch11_step(ch11::step::type_sorted),
         ch11_step(ch11::step::triangles_only), ch11_step(ch11::step::inlined), ch11_step(ch11::step::soa),
+        packets(ch12::walk_kind::masked, 16, 4, 4, o.packet_width), packets(ch12::walk_kind::ranged, 16, 8, 8, o.packet_width),
+        packets(ch12::walk_kind::partition, 16, 16, 16, o.packet_width), packets(ch12::walk_kind::wide, 8, 4, 2, o.packet_width),
+        packets(ch12::walk_kind::wide, 16, 4, 4, o.packet_width),
         wide("ch13-bvh4", "chapter 05's binned SAH tree collapsed greedily into 4-wide nodes, leaves in blocks of 4 triangles",
              4, 4, ch13::collapse_method::greedy),
         wide("ch13-bvh8", "the same tree collapsed greedily into 8-wide nodes, blocks of 4", 8, 4, ch13::collapse_method::greedy),
@@ -174,9 +189,27 @@ std::vector<accel_entry> registered_accels(const registry_options& o) {
                             c.instanced = true;
                             return make_embree_accel(c);
                         }, false, "ch10-brute-instanced"});
-        if (o.packet_width > 0)
-            list.push_back({"embree-medium-packet8", "--", "Embree 3, medium quality, rtcIntersect8 on 4x2 pixel tiles",
-                            [o] { return make_embree_accel({q::medium, o.packet_width, o.threads}); }});
+        // Embree's packet and stream calls, on tiles of rows of the race's image width (both queries, every
+        // ray set: secondary rays are in the order of their pixels).
+        using calls = embree_config::calls;
+        const auto tiled = [o](calls c, bool coherent) {
+            return [o, c, coherent] {
+                embree_config config{q::medium, o.packet_width, o.threads};
+                config.queries = c, config.coherent = coherent;
+                return make_embree_accel(config);
+            };
+        };
+        if (o.packet_width > 0) {
+            list.push_back({"embree-medium-packet8", "--", "Embree 3, medium quality, rtcIntersect8/rtcOccluded8 on 4x2 ray tiles",
+                            tiled(calls::packet8, false)});
+            list.push_back({"embree-medium-packet8-coherent", "--", "the same packets with Embree's coherent flag "
+                            "(RTC_INTERSECT_CONTEXT_FLAG_COHERENT)", tiled(calls::packet8, true)});
+            list.push_back({"embree-medium-packet16-coherent", "--", "Embree 3, medium quality, rtcIntersect16/rtcOccluded16 "
+                            "on 4x4 ray tiles, coherent flag", tiled(calls::packet16, true)});
+            list.push_back({"embree-medium-stream-coherent", "--", "Embree 3, medium quality, ray streams: "
+                            "rtcIntersect1M/rtcOccluded1M on the 64 rays of 8x8 tiles, coherent flag",
+                            tiled(calls::stream, true)});
+        }
     }
     return list;
 }
@@ -220,6 +253,19 @@ std::optional<accel_entry> binned_by_name(const std::string& name) {
                        [p] { return ch05::make_accel(false, p); }};
 }
 
+// ch12-WALKK-WxH for chapter 12's other built combinations (ch12::make_accel); else nothing.
+std::optional<accel_entry> ch12_by_name(const std::string& name, const registry_options& o) {
+    using w = ch12::walk_kind;
+    for (const w walk : {w::masked, w::ranged, w::partition, w::wide})
+        for (const auto& [lanes, tw, th] : {std::tuple{4, 2, 2}, {8, 4, 2}, {16, 4, 4}, {16, 8, 8}, {16, 16, 16}}) {
+            accel_entry e = packets(walk, lanes, tw, th, o.packet_width);
+            if (e.name != name) continue;
+            ch12::make_accel(name, {walk, lanes, tw, th, 0});  // throws, naming what is built, for another
+            return e;
+        }
+    return std::nullopt;
+}
+
 accel_entry find_accel(const std::string& name, const registry_options& options) {
     std::string names;
     for (accel_entry& e : registered_accels(options)) {
@@ -228,11 +274,13 @@ accel_entry find_accel(const std::string& name, const registry_options& options)
     }
     if (std::optional<accel_entry> e = binned_by_name(name)) return *e;
     if (std::optional<accel_entry> e = ch15_by_name(name)) return *e;
+    if (std::optional<accel_entry> e = ch12_by_name(name, options)) return *e;
     if (name == "ch10-brute-instanced")
         return accel_entry{name, "10", "chapter 10's instanced brute force: every instance, the ray in its object space",
                            [] { return ch10::make_brute_accel(); }, true, name};
     throw std::invalid_argument("no structure named '" + name + "' (have: " + names +
-                                "; and ch10-brute-instanced; ch05-binnedK, ch05-binnedK-fast for K in 2..256; ch15-TEST-BOX and brute-TEST "
+                                "; and ch10-brute-instanced; ch12-WALKK-WxH for chapter 12's packets (masked4-2x2, masked8-4x2, "
+                                "ranged16-16x16, partition16-8x8, wide16-... as built); ch05-binnedK, ch05-binnedK-fast for K in 2..256; ch15-TEST-BOX and brute-TEST "
                                 "for chapter 15's tests mt, mt-epsilon, mt-edges, watertight, watertight-double and "
                                 "boxes plain, conservative, fast)");
 }

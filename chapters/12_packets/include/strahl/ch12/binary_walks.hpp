@@ -1,6 +1,6 @@
 // Packets through chapter 05's binary BVH, two ways.
 //   masked_walk: K rays, one SIMD vector; a node is visited while any of the lanes that entered its parent
-//     enters its box; a lane that misses rides along, masked off (I. Wald, P. Slusallek, C. Benthin and
+//     enters its box (both children tested at the parent); a lane that misses rides along, masked off (I. Wald, P. Slusallek, C. Benthin and
 //     M. Wagner, "Interactive rendering with coherent ray tracing", Eurographics 2001).
 //   ranged_walk: V vectors of K rays (a large packet, 64 rays and more); at each node the walk tests the
 //     first vector still in play (an early hit costs one SIMD test for the whole packet); where it misses,
@@ -37,35 +37,47 @@ void masked_walk(const ch04::bvh& tree, ray_packet<K, V>& p, Stats& stats, Leaf&
     int top = 0;
     const ch04::bvh_node* nodes = tree.nodes.data();
     const auto at = [](int j) { return j; };
-    std::uint32_t index = 0;
-    unsigned lanes = p.active[0];
     lane_rays<K> r = load(p, 0);
+    simd::vfloat<K> t;
+    // The root's box; below it, both children's boxes are tested at their parent (as chapter 05's fast walk
+    // does), each with the lanes that entered the parent: a child no lane enters is never fetched.
+    stats.box_test(std::popcount(p.active[0]));
+    unsigned lanes = simd::movemask(packet_box<Coherent>(r, nodes[0].bmin, nodes[0].bmax, p.octant, t)) & p.active[0];
+    std::uint32_t index = 0;
     for (;;) {
-        lanes &= p.active[0];  // (any hit: lanes answered since the node was pushed)
         if (lanes != 0) {
             const ch04::bvh_node& n = nodes[index];
             stats.node_visit();
-            stats.box_test(std::popcount(lanes));
-            simd::vfloat<K> t;
-            const unsigned in = simd::movemask(packet_box<Coherent>(r, n.bmin, n.bmax, p.octant, t)) & lanes;
-            count_lanes(stats, std::popcount(in), K);
-            if (in != 0) {
-                if (n.is_leaf()) {
-                    leaf(r, in, at, n.offset, std::uint32_t(n.count));
-                    r = load(p, 0);  // tmax shrunk by the hits
-                } else {
-                    // Near child first, by the first entering lane's direction on the split axis.
-                    const bool down = std::signbit(p.dir[n.axis][std::countr_zero(in)]);
-                    stack[top++] = {down ? index + 1 : n.offset, in};
-                    index = down ? n.offset : index + 1;
-                    lanes = in;
+            count_lanes(stats, std::popcount(lanes), K);
+            if (n.is_leaf()) {
+                leaf(r, lanes, at, n.offset, std::uint32_t(n.count));
+                r = load(p, 0);  // tmax shrunk by the hits
+            } else {
+                const std::uint32_t left = index + 1, right = n.offset;
+                stats.box_test(2 * std::popcount(lanes));
+                const unsigned in_left = simd::movemask(packet_box<Coherent>(r, nodes[left].bmin, nodes[left].bmax, p.octant, t)) & lanes;
+                const unsigned in_right = simd::movemask(packet_box<Coherent>(r, nodes[right].bmin, nodes[right].bmax, p.octant, t)) & lanes;
+                if (in_left != 0 && in_right != 0) {
+                    // Both: the near child first, as the first lane that entered the node sees it (its direction's
+                    // sign on the split axis); the other on the stack with its own lanes.
+                    const bool down = std::signbit(p.dir[n.axis][std::countr_zero(lanes)]);
+                    stack[top++] = down ? entry{left, in_left} : entry{right, in_right};
+                    index = down ? right : left, lanes = down ? in_right : in_left;
+                    continue;
+                }
+                if (in_left != 0 || in_right != 0) {
+                    index = in_left != 0 ? left : right, lanes = in_left | in_right;
                     continue;
                 }
             }
         }
-        if (top == 0) return;
-        --top;
-        index = stack[top].node, lanes = stack[top].lanes;
+        // Pop the next child whose lanes are still in play (any hit: lanes answered since it was pushed).
+        for (;;) {
+            if (top == 0) return;
+            --top;
+            index = stack[top].node, lanes = stack[top].lanes & p.active[0];
+            if (lanes != 0) break;
+        }
     }
 }
 

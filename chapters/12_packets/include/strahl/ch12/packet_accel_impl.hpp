@@ -172,7 +172,7 @@ private:
             ++packets_;
             if (p->coherent) walk<Any, true>(*p, stats);
             else walk<Any, false>(*p, stats);
-            float used = -1.0f;
+            float used = 0.0f;  // (a packet that misses the root visits no node)
             if constexpr (requires { stats.lane_sum; })
                 if (stats.node_visits > visits_before)
                     used = float(double(stats.lane_sum - before) / double(stats.node_visits - visits_before) / K);

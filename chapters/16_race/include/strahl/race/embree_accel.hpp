@@ -21,31 +21,46 @@
 namespace strahl::race {
 
 // What the wrapper saw of Embree's arithmetic state in the middle of its queries: Embree calls a filter
-// function for every candidate hit, and the probe's filter records MXCSR and the ray's tnear there. Tests
-// attach one to check the yardstick; the race never does (a filter function slows Embree down).
+// function for every candidate hit, and the probe's filter records MXCSR, the ray's tnear and the call's
+// context flags there. Tests attach one to check the yardstick; the race never does (a filter function
+// slows Embree down).
 struct embree_call_probe {
     std::atomic<std::uint64_t> candidate_hits{0};   // filter calls
     std::atomic<std::uint64_t> without_ftz_daz{0};  // ... with flush-to-zero or denormals-are-zero off
     std::atomic<std::uint64_t> denormal_tnear{0};   // ... for a ray whose tnear is a denormal
+    std::atomic<std::uint64_t> coherent{0};         // ... in a call whose context has the coherent flag
 };
 
 struct embree_config {
     enum class quality { low, medium, high } build_quality = quality::medium;  // low: Embree's Morton-code build
-    // Trace primary rays with rtcIntersect8 on 4x2 pixel tiles of an image this wide (rays in scanline
-    // order, as the race writes them); 0 traces one ray at a time with rtcIntersect1 / rtcOccluded1.
+    // The packet and stream calls see a batch as rows of this many rays (the race's image width: its rays
+    // are in scanline order, and secondary rays in the order of their primary hits) and trace tiles of
+    // consecutive rows; 0: one row, the tiles are consecutive rays.
     int packet_image_width = 0;
     int threads = 1;  // Embree's own build threads
+    // How the rays reach Embree, both queries alike:
+    // - single: one at a time, rtcIntersect1 / rtcOccluded1;
+    // - packet8: rtcIntersect8 / rtcOccluded8 on tiles of 4x2 rays;
+    // - packet16: rtcIntersect16 / rtcOccluded16 on tiles of 4x4 rays;
+    // - stream: rtcIntersect1M / rtcOccluded1M, a stream of the 64 rays of an 8x8 tile.
+    // Where a tile runs past the end of a row or of the batch, its missing lanes are invalid (a stream
+    // leaves them out), as are the rays Embree cannot take, which brute force answers one by one.
+    enum class calls { single, packet8, packet16, stream } queries = calls::single;
+    // RTC_INTERSECT_CONTEXT_FLAG_COHERENT: tells Embree the rays of a call are coherent, so that it may take
+    // its coherent code paths (a packet traversed as a frustum; streams sorted into packets); otherwise
+    // the default, INCOHERENT.
+    bool coherent = false;
     // Embree's own instancing (chapter 10's yardstick): one Embree scene per mesh of scene.instances, one
     // instance geometry per instance with its transform; hits report the flattened id and the instance. A
-    // scene without instances is one instance of its mesh. One ray at a time (no packets).
+    // scene without instances is one instance of its mesh. One ray at a time (single calls only).
     bool instanced = false;
-    embree_call_probe* probe = nullptr;  // tests only: record MXCSR and tnear at every candidate hit
+    embree_call_probe* probe = nullptr;  // tests only: record MXCSR, tnear and flags at every candidate hit
 };
 
 // Whether this build found Embree 3 (find_package(embree 3)).
 bool embree_available();
 
-// Throws std::runtime_error where Embree is not available.
+// Throws std::runtime_error where Embree is not available, std::invalid_argument for instanced packets.
 std::unique_ptr<accel> make_embree_accel(const embree_config& config);
 
 // Embree's own account of itself, read once from the report a device prints when created with verbose=1:

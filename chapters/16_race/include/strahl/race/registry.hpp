@@ -22,7 +22,7 @@ struct accel_entry {
 
 struct registry_options {
     int threads = 1;         // Embree's build threads
-    int packet_width = 0;    // image width for Embree's 4x2 packets of primary rays (0: no packet entry)
+    int packet_width = 0;    // image width for Embree's packet and stream rows' tiles (0: no such entries)
 };
 
 // In the order the race lists them: brute force first, then the chapters in order, Embree last.
