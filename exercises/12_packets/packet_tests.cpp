@@ -25,10 +25,10 @@ template <bool Coherent, int K>
 
 // 12.2: true only where no active lane of the coherent packet p can enter the box [bmin, bmax].
 // Goal: one scalar test that culls a node for every ray of a large packet at once.
-// Hint: per axis, bound every lane's near t from below with the packet's extremes: p.inv_lo[a] and
-// p.inv_hi[a] (the range of 1/d), p.near_hi[a] (the largest near origin term); its far t from above with
-// p.far_lo[a]; start from p.t0_lo and p.t1_hi. Compute each bound with ch05::plane_t, fused as 12.1 is.
-// Why: why is computing the bounds with the lanes' own operation (not exact interval arithmetic) still safe?
+// Hint: per axis, a lane's entry is (near plane - o) * (1 / d) with o in [p.org_lo[a], p.org_hi[a]] and 1 / d
+// in [p.inv_lo[a], p.inv_hi[a]]: bound it from below by the smallest of the four products of the ends, less
+// p.margin[a]; the exit from above by the largest (far plane), plus the margin; start from p.t0_lo, p.t1_hi.
+// Why: what would go wrong without the margin, given how packet_box computes a lane's entry?
 template <int K, int V>
 bool frustum_misses(const ray_packet<K, V>& p, const float* bmin, const float* bmax) {
     STRAHL_TODO("12.2 the frustum test");

@@ -38,24 +38,21 @@ template <bool Coherent, int K>
     return lo <= hi;
 }
 
-// 12.2: a lane's near t on an axis, plane * inv - org_near, is at least the smaller of the plane times either
-// end of the packet's range of inv, less the largest org_near (rounding is monotonic, so this holds for the
-// computed values too, computed the same way); its far t at most the larger product less the smallest
-// org_far. The packet misses if the largest lower bound of the entries exceeds the smallest upper bound of
-// the exits.
+// 12.2: per axis, the four products of the plane less either end of the origins' range with either end of
+// the range of 1 / d (one sign: a coherent packet), their smallest less the margin bounding every lane's
+// entry from below, their largest plus the margin every exit from above. The packet misses if the largest
+// lower bound of the entries exceeds the smallest upper bound of the exits.
 template <int K, int V>
 bool frustum_misses(const ray_packet<K, V>& p, const float* bmin, const float* bmax) {
-    constexpr bool fused = ch05::fused_plane_default;
     float lo = p.t0_lo, hi = p.t1_hi;
     for (int a = 0; a < 3; ++a) {
         const bool down = (p.octant >> a) & 1;
         const float near = down ? bmax[a] : bmin[a], far = down ? bmin[a] : bmax[a];
-        const float n = std::min(ch05::plane_t<fused>(near, p.inv_lo[a], p.near_hi[a]),
-                                 ch05::plane_t<fused>(near, p.inv_hi[a], p.near_hi[a]));
-        const float f = std::max(ch05::plane_t<fused>(far, p.inv_lo[a], p.far_lo[a]),
-                                 ch05::plane_t<fused>(far, p.inv_hi[a], p.far_lo[a]));
-        lo = std::max(lo, n);
-        hi = std::min(hi, f);
+        const float n1 = near - p.org_hi[a], n2 = near - p.org_lo[a], f1 = far - p.org_hi[a], f2 = far - p.org_lo[a];
+        const float near_t = std::min(std::min(n1 * p.inv_lo[a], n1 * p.inv_hi[a]), std::min(n2 * p.inv_lo[a], n2 * p.inv_hi[a]));
+        const float far_t = std::max(std::max(f1 * p.inv_lo[a], f1 * p.inv_hi[a]), std::max(f2 * p.inv_lo[a], f2 * p.inv_hi[a]));
+        lo = std::max(lo, near_t - p.margin[a]);
+        hi = std::min(hi, far_t + p.margin[a]);
     }
     return lo > hi;
 }

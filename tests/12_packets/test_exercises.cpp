@@ -36,7 +36,7 @@ std::unique_ptr<ray_packet<K, V>> random_packet(pcg32& g, const tree_frame& f, i
         r.tmax = g.next_float() < 0.3f ? 1.0f + 10.0f * g.next_float() : inf;
         p->set(i, r, lane_terms(r, f), std::uint32_t(i));
     }
-    p->finish();
+    p->finish(f);
     return p;
 }
 

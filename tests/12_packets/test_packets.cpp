@@ -22,7 +22,8 @@ std::vector<packet_config> all_configs(int width) {
     using w = walk_kind;
     return {{w::masked, 4, 2, 2, width},    {w::masked, 8, 4, 2, width},      {w::masked, 16, 4, 4, width},
             {w::ranged, 16, 8, 8, width},   {w::ranged, 16, 16, 16, width},   {w::partition, 16, 8, 8, width},
-            {w::partition, 16, 16, 16, width}, {w::wide, 8, 4, 2, width},     {w::wide, 16, 4, 4, width}};
+            {w::partition, 16, 16, 16, width}, {w::wide, 8, 4, 2, width},     {w::wide, 16, 4, 4, width},
+            {w::frustum, 16, 4, 4, width}};
 }
 
 ch04::bvh binary(const triangle_mesh& m) {
@@ -120,7 +121,9 @@ TEST_CASE("ch12 packets: lane counts add up, and packets visit fewer nodes than 
         std::uint64_t visits = 0;
         for (const std::uint64_t v : l.visits) visits += v;
         // One entry per vector at a node: per node visit where the packet is one vector, more for large packets.
-        if (c.tile_w * c.tile_h == c.lanes) CHECK(visits == l.counts.nodes_visited);
+        // (The frustum walk tests rays at its leaves only: its lanes are counted there.)
+        if (c.walk == walk_kind::frustum) CHECK(visits > 0);
+        else if (c.tile_w * c.tile_h == c.lanes) CHECK(visits == l.counts.nodes_visited);
         else CHECK(visits >= l.counts.nodes_visited);
         CHECK(l.counts.rays == rays.size());
         CHECK(l.packets == (64 / std::size_t(c.tile_w)) * ((48 + std::size_t(c.tile_h) - 1) / std::size_t(c.tile_h)));

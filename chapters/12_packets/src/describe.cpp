@@ -10,6 +10,7 @@ const char* to_string(walk_kind w) {
     case walk_kind::ranged: return "ranged";
     case walk_kind::partition: return "partition";
     case walk_kind::wide: return "wide";
+    case walk_kind::frustum: return "frustum";
     }
     return "?";
 }

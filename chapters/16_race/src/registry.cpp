@@ -141,7 +141,7 @@ std::vector<accel_entry> registered_accels(const registry_options& o) {
         ch11_step(ch11::step::triangles_only), ch11_step(ch11::step::inlined), ch11_step(ch11::step::soa),
         packets(ch12::walk_kind::masked, 16, 4, 4, o.packet_width), packets(ch12::walk_kind::ranged, 16, 8, 8, o.packet_width),
         packets(ch12::walk_kind::partition, 16, 16, 16, o.packet_width), packets(ch12::walk_kind::wide, 8, 4, 2, o.packet_width),
-        packets(ch12::walk_kind::wide, 16, 4, 4, o.packet_width),
+        packets(ch12::walk_kind::wide, 16, 4, 4, o.packet_width), packets(ch12::walk_kind::frustum, 16, 4, 4, o.packet_width),
         wide("ch13-bvh4", "chapter 05's binned SAH tree collapsed greedily into 4-wide nodes, leaves in blocks of 4 triangles",
              4, 4, ch13::collapse_method::greedy),
         wide("ch13-bvh8", "the same tree collapsed greedily into 8-wide nodes, blocks of 4", 8, 4, ch13::collapse_method::greedy),
@@ -256,7 +256,7 @@ std::optional<accel_entry> binned_by_name(const std::string& name) {
 // ch12-WALKK-WxH for chapter 12's other built combinations (ch12::make_accel); else nothing.
 std::optional<accel_entry> ch12_by_name(const std::string& name, const registry_options& o) {
     using w = ch12::walk_kind;
-    for (const w walk : {w::masked, w::ranged, w::partition, w::wide})
+    for (const w walk : {w::masked, w::ranged, w::partition, w::wide, w::frustum})
         for (const auto& [lanes, tw, th] : {std::tuple{4, 2, 2}, {8, 4, 2}, {16, 4, 4}, {16, 8, 8}, {16, 16, 16}}) {
             accel_entry e = packets(walk, lanes, tw, th, o.packet_width);
             if (e.name != name) continue;

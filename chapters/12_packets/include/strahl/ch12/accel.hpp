@@ -17,6 +17,8 @@ enum class walk_kind {
     ranged,     // V x K rays, binary tree, first active vector and frustum (Wald, Boulos and Shirley 2007)
     partition,  // V x K rays, binary tree, active-ray list partitioned per node (Overbeck et al. 2008)
     wide,       // K rays, chapter 13's 8-wide tree: K rays against each child box (Embree's hybrid kernels)
+    frustum,    // V x K rays, 8-wide tree, the packet's frustum against all children at once, rays at the
+                // leaves (Embree's coherent kernels); packets of mixed octants take the wide walk
 };
 const char* to_string(walk_kind w);
 
@@ -53,7 +55,8 @@ public:
 };
 
 // The combinations built (a packet tracer is compiled per walk, K and V): masked K = 4 (2x2), 8 (4x2), 16
-// (4x4); ranged and partition K = 16 with 8x8 or 16x16 tiles; wide K = 8 (4x2), 16 (4x4). Throws
+// (4x4); ranged and partition K = 16 with 8x8 or 16x16 tiles; wide K = 8 (4x2), 16 (4x4); frustum K = 16
+// with 4x4, 8x8 or 16x16 tiles. Throws
 // std::invalid_argument for another.
 std::unique_ptr<packet_accel_base> make_accel(std::string name, const packet_config& config);
 

@@ -75,8 +75,9 @@ struct alignas(64) ray_packet {
     int octant = 0;                 // the sign bits of every active lane, where they all agree ...
     bool coherent = true;           // ... which is when the whole packet can choose near planes once
 
-    // Frustum: the active lanes' extremes, for the interval-arithmetic test (frustum.hpp).
-    float inv_lo[3], inv_hi[3], near_hi[3], far_lo[3], t0_lo, t1_hi;
+    // Frustum: the active lanes' extremes, for the interval-arithmetic test (exercise 12.2): per axis the
+    // range of the origins and of 1 / d, a margin (below), and the range of the intervals' ends.
+    float org_lo[3], org_hi[3], inv_lo[3], inv_hi[3], margin[3], t0_lo, t1_hi;
 
     // Vector v of a field, one SIMD load.
     static vf get(const float* field, int v) { return vf::load(field + v * K); }
@@ -97,9 +98,9 @@ struct alignas(64) ray_packet {
         active[lane / K] |= 1u << (lane % K);
     }
     // Lanes that hold no ray get a copy of an active lane's terms (never active): every SIMD operation on
-    // them is harmless, and the frustum's extremes are those of the active lanes. Then the signs, the
-    // octant, and the frustum's extremes.
-    void finish() {
+    // them is harmless, and the frustum's extremes are those of the active lanes. Then the octant and the
+    // frustum's extremes; f: the tree the lanes' terms were made for.
+    void finish(const tree_frame& f) {
         int any = -1;
         for (int i = 0; i < size && any < 0; ++i)
             if ((active[i / K] >> (i % K)) & 1u) any = i;
@@ -120,13 +121,20 @@ struct alignas(64) ray_packet {
             if (octant < 0) octant = o;
             coherent = coherent && o == octant;
         }
-        // The frustum: per axis the range of 1 / d, the largest near-plane origin term and the smallest far one.
+        // The frustum: per axis the range of the origins and of 1 / d. The margin: a lane's computed near t
+        // lies at most its widening (2^-19 of |plane| + |org|, lane_terms) and a few roundings (each 2^-24 of
+        // the same) times |1 / d| below the exact (plane - org) / d; the frustum's own products in float
+        // round by as much again. 2^-18 of the axis's span (the tree's largest |coordinate| plus the largest
+        // |origin|) times the largest |1 / d| covers both, and 2^-125 the lanes' 2^-126 in t.
         for (int a = 0; a < 3; ++a) {
-            inv_lo[a] = inv_hi[a] = inv[a][0], near_hi[a] = org_near[a][0], far_lo[a] = org_far[a][0];
+            org_lo[a] = org_hi[a] = org[a][0], inv_lo[a] = inv_hi[a] = inv[a][0];
             for (int i = 1; i < size; ++i) {
+                org_lo[a] = std::min(org_lo[a], org[a][i]), org_hi[a] = std::max(org_hi[a], org[a][i]);
                 inv_lo[a] = std::min(inv_lo[a], inv[a][i]), inv_hi[a] = std::max(inv_hi[a], inv[a][i]);
-                near_hi[a] = std::max(near_hi[a], org_near[a][i]), far_lo[a] = std::min(far_lo[a], org_far[a][i]);
             }
+            const float p = std::max(std::fabs(f.bounds.min[a]), std::fabs(f.bounds.max[a]));
+            const float o = std::max(std::fabs(org_lo[a]), std::fabs(org_hi[a]));
+            margin[a] = 0x1p-18f * (p + o) * std::max(std::fabs(inv_lo[a]), std::fabs(inv_hi[a])) + 0x1p-125f;
         }
         t0_lo = t0[0];
         for (int i = 1; i < size; ++i) t0_lo = std::min(t0_lo, t0[i]);
@@ -198,7 +206,9 @@ simd::vmask<K> packet_box(const lane_rays<K>& r, const float* bmin, const float*
                           simd::vfloat<K>& entry);
 
 // Exercise 12.2 (packet_tests.cpp): the interval-arithmetic frustum of a coherent packet against one box:
-// true only where no active lane of the packet can enter the box (packet_box would give no lane).
+// true only where no active lane of the packet can enter the box (packet_box would give no lane). A lane's
+// entry on axis a is (plane - o) * (1 / d) for o in [org_lo, org_hi] and 1 / d in [inv_lo, inv_hi]: at
+// least the smallest of the four products of the ends, less the margin; its exit at most the largest, plus.
 template <int K, int V>
 bool frustum_misses(const ray_packet<K, V>& p, const float* bmin, const float* bmax);
 

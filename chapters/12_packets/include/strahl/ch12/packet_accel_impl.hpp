@@ -11,6 +11,7 @@
 #include "strahl/ch05/sah.hpp"
 #include "strahl/ch12/accel.hpp"
 #include "strahl/ch12/binary_walks.hpp"
+#include "strahl/ch12/frustum_walk.hpp"
 #include "strahl/ch12/partition_walk.hpp"
 #include "strahl/ch12/wide_packet_walk.hpp"
 #include "strahl/ch13/wide_bvh.hpp"
@@ -40,6 +41,10 @@ struct leaf_triangle {
 template <walk_kind W, int K, int V>
 class packet_accel final : public packet_accel_base {
     static_assert(W == walk_kind::masked || W == walk_kind::wide ? V == 1 : true);
+    static constexpr bool wide_tree = W == walk_kind::wide || W == walk_kind::frustum;
+    // The wide tree's leaves: blocks of this many triangles (the packet tests them one by one; the block size
+    // sets how many the optimal collapse may gather into a leaf).
+    static constexpr int wide_block = 8;
 
 public:
     packet_accel(std::string name, const packet_config& c) : name_(std::move(name)), config_(c) {}
@@ -64,10 +69,10 @@ public:
         binary_ = ch05::build_sah_bvh_fast(boxes, centroids, params);
         box_ = tree_frame(binary_.bounds);
         tris_.clear();
-        if constexpr (W == walk_kind::wide) {
+        if constexpr (wide_tree) {
             ch13::collapse_config cc;
             cc.method = ch13::collapse_method::optimal;
-            wide_ = ch13::collapse<8, 4>(binary_, s.mesh, cc);
+            wide_ = ch13::collapse<8, wide_block>(binary_, s.mesh, cc);
         } else {
             tris_.resize(binary_.prim_ids.size());
             for (std::size_t k = 0; k < tris_.size(); ++k) {
@@ -80,7 +85,7 @@ public:
     }
     std::optional<double> sah_cost() const override {
         if (!set_) return std::nullopt;
-        if constexpr (W == walk_kind::wide) return wide_.stats.sah;
+        if constexpr (wide_tree) return wide_.stats.sah;
         else return ch04::sah_tree_cost(binary_, 1.0f, 1.0f);
     }
     // The tree walked, the triangles its leaves read, and the binary tree and triangle set that single rays
@@ -164,7 +169,7 @@ private:
                 p->best[lane] = hit{};
             }
             if (p->empty()) return;
-            p->finish();
+            p->finish(box_);
             unsigned held[V];
             for (int v = 0; v < V; ++v) held[v] = p->active[v];
             std::uint64_t before = 0, visits_before = 0;
@@ -189,13 +194,13 @@ private:
     // The leaf test on a packet's lanes: closest hit records (chapter 01's rule, per lane); any hit marks
     // the lane answered and takes it out of the packet.
     template <bool Any, class Stats>
-    [[gnu::always_inline]] void test_triangle(ray_packet<K, V>& p, const lane_rays<K>& r, unsigned& lanes, auto at,
+    [[gnu::always_inline]] bool test_triangle(ray_packet<K, V>& p, const lane_rays<K>& r, unsigned& lanes, auto at,
                                               const float* v0, const float* e1, const float* e2, std::uint32_t id,
                                               Stats& stats) const {
         stats.prim_test(std::popcount(lanes));
         simd::vfloat<K> t, u, w;
         const unsigned b = packet_triangle(r, v0, e1, e2, t, u, w) & lanes;
-        if (b == 0) return;
+        if (b == 0) return false;
         if constexpr (Any) {
             for (unsigned x = b; x != 0; x &= x - 1) {
                 const int i = at(std::countr_zero(x));
@@ -206,22 +211,43 @@ private:
         } else {
             packet_record(p, b, at, id, t, u, w);
         }
+        return true;
+    }
+
+    // The triangles of a wide leaf (blocks of 4) against the lanes of one vector; whether any lane hit.
+    template <bool Any, class Stats>
+    [[gnu::always_inline]] bool wide_leaf(ray_packet<K, V>& p, const lane_rays<K>& r, unsigned lanes, auto at,
+                                          std::uint32_t ref, Stats& stats) const {
+        bool any = false;
+        const ch13::triangle_block<wide_block>* b = &wide_.blocks[ch13::leaf_first(ref)];
+        for (std::uint32_t k = ch13::leaf_blocks(ref); k-- > 0 && lanes != 0; ++b)
+            for (int i = 0; i < wide_block && lanes != 0; ++i) {
+                if (i > 0 && b->id[i] == b->id[i - 1]) break;  // lanes past the leaf's end repeat its last
+                const float v0[3] = {b->v0[0][i], b->v0[1][i], b->v0[2][i]};
+                const float e1[3] = {b->e1[0][i], b->e1[1][i], b->e1[2][i]};
+                const float e2[3] = {b->e2[0][i], b->e2[1][i], b->e2[2][i]};
+                any |= test_triangle<Any>(p, r, lanes, at, v0, e1, e2, b->id[i], stats);
+            }
+        return any;
     }
 
     template <bool Any, bool Coherent, class Stats>
     void walk(ray_packet<K, V>& p, Stats& stats) const {
-        if constexpr (W == walk_kind::wide) {
+        if constexpr (W == walk_kind::frustum && Coherent) {
+            const auto leaf = [&](const lane_rays<K>& r, unsigned lanes, auto at, std::uint32_t ref, const float* bmin,
+                                  const float* bmax) {
+                // The vector against the leaf's box first: only its lanes that enter test the triangles.
+                simd::vfloat<K> t;
+                stats.box_test(std::popcount(lanes));
+                const unsigned in = simd::movemask(packet_box<true>(r, bmin, bmax, p.octant, t)) & lanes;
+                count_lanes(stats, std::popcount(in), K);
+                if (in != 0 && wide_leaf<Any>(p, r, in, at, ref, stats) && !Any) p.update_t1_hi();
+            };
+            frustum_walk<!Any>(wide_, p, stats, leaf);
+        } else if constexpr (wide_tree) {
+            static_assert(W == walk_kind::wide || V == 1, "mixed octants in large packets: not built");
             const auto leaf = [&](const lane_rays<K>& r, unsigned lanes, auto at, std::uint32_t ref) {
-                const ch13::triangle_block<4>* b = &wide_.blocks[ch13::leaf_first(ref)];
-                for (std::uint32_t k = ch13::leaf_blocks(ref); k-- > 0 && lanes != 0; ++b)
-                    for (int i = 0; i < 4 && lanes != 0; ++i) {
-                        if (i > 0 && b->id[i] == b->id[i - 1]) break;  // lanes past the leaf's end repeat its last
-                        const float v0[3] = {b->v0[0][i], b->v0[1][i], b->v0[2][i]};
-                        const float e1[3] = {b->e1[0][i], b->e1[1][i], b->e1[2][i]};
-                        const float e2[3] = {b->e2[0][i], b->e2[1][i], b->e2[2][i]};
-                        test_triangle<Any>(p, r, lanes, at, v0, e1, e2, b->id[i], stats);
-                    }
-                if constexpr (!Any) p.update_t1_hi();
+                wide_leaf<Any>(p, r, lanes, at, ref, stats);
             };
             wide_packet_walk<!Any, Coherent>(wide_, p, stats, leaf);
         } else {
@@ -263,7 +289,7 @@ private:
     ch04::bvh binary_;
     tree_frame box_;
     std::vector<leaf_triangle> tris_;
-    ch13::wide_bvh<8, 4> wide_;
+    ch13::wide_bvh<8, wide_block> wide_;
     mutable std::uint64_t packets_ = 0;  // (the counting queries only; not thread-safe, as those are not)
 };
 
@@ -287,11 +313,12 @@ std::unique_ptr<packet_accel_base> make_accel(std::string name, const packet_con
     case key(wk::partition, 16, 16): return std::make_unique<packet_accel<wk::partition, 16, 16>>(std::move(name), c);
     case key(wk::wide, 8, 1): return std::make_unique<packet_accel<wk::wide, 8, 1>>(std::move(name), c);
     case key(wk::wide, 16, 1): return std::make_unique<packet_accel<wk::wide, 16, 1>>(std::move(name), c);
+    case key(wk::frustum, 16, 1): return std::make_unique<packet_accel<wk::frustum, 16, 1>>(std::move(name), c);
     default:
         throw std::invalid_argument(std::string("packet tracer: the ") + to_string(c.walk) + " walk is not built for " +
                                     std::to_string(c.lanes) + " lanes and " + std::to_string(c.tile_w) + "x" +
                                     std::to_string(c.tile_h) + " tiles (built: masked 2x2/4, 4x2/8, 4x4/16; ranged and "
-                                    "partition 8x8 or 16x16 with 16 lanes; wide 4x2/8, 4x4/16)");
+                                    "partition 8x8 or 16x16 with 16 lanes; wide 4x2/8, 4x4/16; frustum 4x4/16)");
     }
 }
 

@@ -1,5 +1,6 @@
 // A packet of K rays through chapter 13's wide BVH: at each node, the K rays against each of its N child
-// boxes in turn (K lanes, one box broadcast), as Embree's hybrid kernels do; the children that any ray
+// boxes in turn (K lanes, one box broadcast), as Embree's hybrid kernels do (a coherent packet only against
+// the boxes its frustum may enter, found by one test of all N); the children that any ray
 // enters are visited nearest first (by the smallest entry distance over the rays that enter), each with the
 // lanes that entered it. Leaves: every triangle of the leaf's blocks against the K rays.
 //   I. Wald, C. Benthin and S. Boulos, "Getting rid of packets", IEEE RT 2008 (wide nodes);
@@ -8,6 +9,7 @@
 #pragma once
 #include "strahl/ch04/bvh.hpp"
 #include "strahl/ch12/binary_walks.hpp"
+#include "strahl/ch12/frustum_walk.hpp"
 #include "strahl/ch12/packet.hpp"
 #include "strahl/ch13/wide_bvh.hpp"
 #include <bit>
@@ -34,23 +36,31 @@ void wide_packet_walk(const ch13::wide_bvh<N, M>& tree, ray_packet<K, 1>& p, Sta
         if (!ch13::is_leaf(ref)) {
             const ch13::wide_node<N>& n = tree.nodes[ref];
             stats.node_visit();
-            stats.box_test(std::popcount(lanes) * N);
+            if constexpr (Coherent) stats.box_test(N);  // the frustum's test
             count_lanes(stats, std::popcount(lanes), K);
             entry hits[N];
             int count = 0;
-            for (int c = 0; c < N; ++c) {
+            // A coherent packet first tests its frustum against all N boxes at once (frustum_walk.hpp): the
+            // rays themselves are tested only against the boxes the frustum may enter.
+            unsigned candidates = (1u << N) - 1;
+            if constexpr (Coherent) {
+                simd::vfloat<N> bound;
+                candidates = frustum_children(p, n, bound);
+            }
+            for (unsigned rest = candidates; rest != 0; rest &= rest - 1) {
+                const int c = std::countr_zero(rest);
                 if (!n.used(c)) continue;
+                stats.box_test(std::popcount(lanes));
                 const float bmin[3] = {n.lo[0][c], n.lo[1][c], n.lo[2][c]};
                 const float bmax[3] = {n.hi[0][c], n.hi[1][c], n.hi[2][c]};
                 simd::vfloat<K> t;
-                const unsigned in = simd::movemask(packet_box<Coherent>(r, bmin, bmax, p.octant, t)) & lanes;
+                const simd::vmask<K> enters = packet_box<Coherent>(r, bmin, bmax, p.octant, t);
+                const unsigned in = simd::movemask(enters) & lanes;
                 if (in == 0) continue;
+                // The nearest entry, over every lane that enters (lanes outside `lanes` too: a smaller value
+                // only orders and prunes more cautiously), in a few SIMD steps.
                 float nearest = inf;
-                if constexpr (Nearest) {
-                    alignas(64) float ts[K];
-                    t.store(ts);
-                    for (unsigned b = in; b != 0; b &= b - 1) nearest = std::min(nearest, ts[std::countr_zero(b)]);
-                }
+                if constexpr (Nearest) nearest = simd::reduce_min(simd::select(enters, t, simd::vfloat<K>(inf)));
                 // Insertion by distance, farthest first (stored order: appended).
                 int j = count++;
                 if constexpr (Nearest)
@@ -78,13 +88,9 @@ void wide_packet_walk(const ch13::wide_bvh<N, M>& tree, ray_packet<K, 1>& p, Sta
             const entry e = stack[--top];
             unsigned keep = e.lanes & p.active[0];
             if (keep == 0) continue;
-            if constexpr (Nearest) {
-                alignas(64) float t1[K];
-                r.t1.store(t1);
-                float reach = -inf;
-                for (unsigned b = keep; b != 0; b &= b - 1) reach = std::max(reach, t1[std::countr_zero(b)]);
-                if (!(e.t <= reach)) continue;
-            }
+            // (Over every lane: a larger reach only keeps more.)
+            if constexpr (Nearest)
+                if (!(e.t <= simd::reduce_max(r.t1))) continue;
             ref = e.ref, lanes = keep;
             break;
         }
