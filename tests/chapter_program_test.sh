@@ -57,6 +57,8 @@ case $nn in
     sized=(frames/frame_000.png:"32 24") ;;
 11) args=(--quick --width 32 --out "$out") files=(steps.csv render.csv staircase.svg render.png)
     sized=(render.png:"32 32") ;;
+12) args=(--quick --width 32 --repeats 1 --out "$out") files=(packets.csv lanes.csv vs_ch13.svg stadium_lanes.png)
+    sized=() ;;
 13) args=(--quick --width 32 --repeats 1 --out "$out") files=(wide.csv speedup.svg)
     sized=() ;;
 15) args=(--quick --out "$out") files=(escapes.csv spawn.csv far.csv table.csv escape_vs_speed.svg)
