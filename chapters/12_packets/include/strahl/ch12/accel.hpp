@@ -56,7 +56,7 @@ public:
 
 // The combinations built (a packet tracer is compiled per walk, K and V): masked K = 4 (2x2), 8 (4x2), 16
 // (4x4); ranged and partition K = 16 with 8x8 or 16x16 tiles; wide K = 8 (4x2), 16 (4x4); frustum K = 16
-// with 4x4, 8x8 or 16x16 tiles. Throws
+// with 4x4 tiles. Throws
 // std::invalid_argument for another.
 std::unique_ptr<packet_accel_base> make_accel(std::string name, const packet_config& config);
 
