@@ -27,7 +27,7 @@ namespace {
 template <int K>
 struct lane_counting : counting {
     std::uint64_t visits[K + 1] = {};
-    std::uint64_t lane_sum = 0, node_visits = 0;
+    std::uint64_t lane_sum = 0, node_visits = 0, packets = 0;
     void lanes(int active, int) { ++visits[active], lane_sum += std::uint64_t(active), ++node_visits; }
 };
 
@@ -125,14 +125,13 @@ private:
         lane_stats l;
         l.counts = s.values();
         l.visits.assign(s.visits, s.visits + K + 1);
-        l.packets = packets_;
+        l.packets = s.packets;
         return l;
     }
 
     // Far origins moved to the scene first (ray_frame.hpp), as per_ray_accel does for every structure.
     template <bool Any, class Stats>
     void run(std::span<const ray> rays, hit* hits, std::uint8_t* blocked, Stats& stats, std::vector<float>* per_ray) const {
-        packets_ = 0;
         if (per_ray) per_ray->assign(rays.size(), -1.0f);
         if (!set_) {
             for (std::size_t i = 0; i < rays.size(); ++i) Any ? void(blocked[i] = 0) : void(hits[i] = hit{});
@@ -174,7 +173,7 @@ private:
             for (int v = 0; v < V; ++v) held[v] = p->active[v];
             std::uint64_t before = 0, visits_before = 0;
             if constexpr (requires { stats.lane_sum; }) before = stats.lane_sum, visits_before = stats.node_visits;
-            ++packets_;
+            if constexpr (requires { stats.packets; }) ++stats.packets;
             if (p->coherent) walk<Any, true>(*p, stats);
             else walk<Any, false>(*p, stats);
             float used = 0.0f;  // (a packet that misses the root visits no node)
@@ -290,7 +289,6 @@ private:
     tree_frame box_;
     std::vector<leaf_triangle> tris_;
     ch13::wide_bvh<8, wide_block> wide_;
-    mutable std::uint64_t packets_ = 0;  // (the counting queries only; not thread-safe, as those are not)
 };
 
 }  // namespace
