@@ -97,21 +97,24 @@ void ranged_walk(const ch04::bvh& tree, ray_packet<K, V>& p, Stats& stats, Leaf&
         if (first < V) {
             const ch04::bvh_node& n = nodes[index];
             stats.node_visit();
-            // 1. The first vector in play: an early hit enters the node for the whole packet.
+            // Vector v against the node's box: the lanes in play that enter it.
             simd::vfloat<K> t;
+            const auto test = [&](int v) {
+                const unsigned in = simd::movemask(packet_box<Coherent>(load(p, v), n.bmin, n.bmax, p.octant, t)) & p.active[v];
+                stats.box_test(std::popcount(p.active[v]));
+                count_lanes(stats, std::popcount(in), K);
+                return in;
+            };
+            // 1. The first vector in play: an early hit enters the node for the whole packet.
             int f = first;
-            unsigned in = simd::movemask(packet_box<Coherent>(load(p, f), n.bmin, n.bmax, p.octant, t)) & p.active[f];
-            stats.box_test(std::popcount(p.active[f]));
-            count_lanes(stats, std::popcount(in), K);
+            unsigned in = test(f);
             bool enter = in != 0;
             // 2. Else the frustum: one test culls the node for every ray of the packet.
             if (!enter && !(Coherent && frustum_misses(p, n.bmin, n.bmax))) {
                 // 3. Else the next vectors, until one enters: the subtree starts from there.
                 for (++f; f < V && !enter; f += enter ? 0 : 1) {
                     if (p.active[f] == 0) continue;
-                    in = simd::movemask(packet_box<Coherent>(load(p, f), n.bmin, n.bmax, p.octant, t)) & p.active[f];
-                    stats.box_test(std::popcount(p.active[f]));
-                    count_lanes(stats, std::popcount(in), K);
+                    in = test(f);
                     enter = in != 0;
                 }
             }
@@ -121,11 +124,8 @@ void ranged_walk(const ch04::bvh& tree, ray_packet<K, V>& p, Stats& stats, Leaf&
                     leaf(load(p, f), in, [f](int j) { return f * K + j; }, n.offset, std::uint32_t(n.count));
                     for (int v = f + 1; v < V; ++v) {
                         if (p.active[v] == 0) continue;
-                        const lane_rays<K> r = load(p, v);
-                        stats.box_test(std::popcount(p.active[v]));
-                        const unsigned b = simd::movemask(packet_box<Coherent>(r, n.bmin, n.bmax, p.octant, t)) & p.active[v];
-                        count_lanes(stats, std::popcount(b), K);
-                        if (b != 0) leaf(r, b, [v](int j) { return v * K + j; }, n.offset, std::uint32_t(n.count));
+                        if (const unsigned b = test(v))
+                            leaf(load(p, v), b, [v](int j) { return v * K + j; }, n.offset, std::uint32_t(n.count));
                     }
                 } else {
                     const bool down = std::signbit(p.dir[n.axis][f * K + std::countr_zero(in)]);
