@@ -312,6 +312,18 @@ TEST_CASE("ch16 exactness: chapter 15's combinations, found by name, equal their
     check_exact_structures(mesh_scene("dense_soup", random_soup(3000, 42, 0.2f)), 40, 30, entries);
 }
 
+TEST_CASE("ch16 exactness: chapter 14's hybrid at any threshold, found by name, equals brute force", "[ch16][exactness]") {
+    std::vector<accel_entry> entries{find_accel("brute")};
+    for (const char* name : {"ch14-hybrid8-0", "ch14-hybrid8-3", "ch14-hybrid16-1", "ch14-hybrid16-12", "ch14-hybrid16-16"}) {
+        INFO(name);
+        entries.push_back(find_accel(name));
+        CHECK(entries.back().chapter == "14");
+    }
+    CHECK_THROWS_WITH(find_accel("ch14-hybrid16-17"), Catch::Contains("ch14-hybridK-T"));
+    CHECK_THROWS_WITH(find_accel("ch14-hybrid4-auto"), Catch::Contains("ch14-hybridK-T"));
+    check_exact_structures(builtin_scene("teapot"), 48, 32, entries);
+}
+
 TEST_CASE("ch16 exactness: the registered watertight rows let no ray escape a closed sphere", "[ch16][exactness]") {
     // Rays from inside spheres (48 x 24) at three scales and placements, aimed exactly at every vertex and
     // every edge's midpoint: Moeller-Trumbore's row lets some through, the watertight rows none.

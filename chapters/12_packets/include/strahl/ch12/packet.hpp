@@ -97,6 +97,45 @@ struct alignas(64) ray_packet {
         ray_index[lane] = index;
         active[lane / K] |= 1u << (lane % K);
     }
+    // Puts ray r (the batch's ray `index`) into lane `lane` without its terms: set_terms() computes them for
+    // every lane at once.
+    void set_ray(int lane, const ray& r, std::uint32_t index) {
+        for (int a = 0; a < 3; ++a) org[a][lane] = r.org[a], dir[a][lane] = r.dir[a];
+        tmin[lane] = r.tmin, tmax[lane] = r.tmax;
+        ray_index[lane] = index;
+        active[lane / K] |= 1u << (lane % K);
+    }
+    // lane_terms for every lane, K at a time: the same operations in the same order, so the same bits (|x|
+    // as max(x, -x): a zero's sign is lost in the sums it enters). refused[v]: the active lanes of vector v
+    // whose ray the fast test cannot take (lane_terms::ok false), for the caller to trace alone and clear.
+    void set_terms(const tree_frame& f, unsigned* refused) {
+        const auto abs = [](vf x) { return simd::max(x, -x); };
+        for (int v = 0; v < V; ++v) {
+            const int at = v * K;
+            simd::vmask<K> ok(true);
+            vf reach = abs(get(org[0], v) - vf(f.centre[0]));
+            reach = reach + abs(get(org[1], v) - vf(f.centre[1]));
+            reach = reach + abs(get(org[2], v) - vf(f.centre[2]));
+            reach = reach + vf(f.diagonal);
+            const vf len = simd::max(abs(get(dir[0], v)), simd::max(abs(get(dir[1], v)), abs(get(dir[2], v))));
+            for (int a = 0; a < 3; ++a) {
+                const vf i = vf(1.0f) / get(dir[a], v), o = get(org[a], v);
+                const float p = std::max(std::fabs(f.bounds.min[a]), std::fabs(f.bounds.max[a]));
+                const vf span = vf(p) + abs(o), eps = vf(0x1p-19f) * span;
+                const vf toward = simd::select(i < vf(0.0f), -eps, eps);
+                ok = ok & (abs(i) <= vf(0x1p100f)) & ((span + eps) * abs(i) <= vf(0x1p100f));
+                i.store(inv[a] + at);
+                ((o + toward) * i + vf(0x1p-126f)).store(org_near[a] + at);
+                ((o - toward) * i - vf(0x1p-126f)).store(org_far[a] + at);
+            }
+            const vf sl = (reach * vf(0x1p-16f) + vf(1e-5f * f.diagonal)) / len * vf(1.0f + 0x1p-20f);
+            ok = ok & (abs(sl) <= vf(std::numeric_limits<float>::max()));
+            sl.store(slack + at);
+            (get(tmin, v) - sl).store(t0 + at);
+            (get(tmax, v) + sl).store(t1 + at);
+            refused[v] = active[v] & ~simd::movemask(ok);
+        }
+    }
     // Lanes that hold no ray get a copy of an active lane's terms (never active): every SIMD operation on
     // them is harmless, and the frustum's extremes are those of the active lanes. Then the octant and the
     // frustum's extremes; f: the tree the lanes' terms were made for.
@@ -114,35 +153,48 @@ struct alignas(64) ray_packet {
             tmin[i] = tmin[any], tmax[i] = tmax[any], slack[i] = slack[any], t0[i] = t0[any], t1[i] = t1[any];
             ray_index[i] = invalid_id;
         }
-        octant = -1;
+        // The octant: each axis's sign bits over the lanes, all set or all clear (one test per vector).
+        const unsigned all = simd::detail::lane_bits(K);
         coherent = true;
-        for (int i = 0; i < size; ++i) {
-            const int o = int(std::signbit(dir[0][i])) | int(std::signbit(dir[1][i])) << 1 | int(std::signbit(dir[2][i])) << 2;
-            if (octant < 0) octant = o;
-            coherent = coherent && o == octant;
+        octant = 0;
+        for (int a = 0; a < 3; ++a) {
+            // Per vector: 1 all negative, 2 all positive; the packet agrees if every vector says the same.
+            unsigned kinds = 0;
+            for (int v = 0; v < V; ++v) {
+                const unsigned m = simd::movemask(simd::as_int(get(dir[a], v)) < simd::vint<K>(0));
+                kinds |= m == all ? 1u : m == 0 ? 2u : 4u;
+            }
+            coherent = coherent && (kinds == 1u || kinds == 2u);
+            octant |= int(kinds == 1u) << a;
         }
+        if (!coherent) octant = int(std::signbit(dir[0][0])) | int(std::signbit(dir[1][0])) << 1 |
+                                int(std::signbit(dir[2][0])) << 2;
         // The frustum: per axis the range of the origins and of 1 / d. The margin: a lane's computed near t
         // lies at most its widening (2^-19 of |plane| + |org|, lane_terms) and a few roundings (each 2^-24 of
         // the same) times |1 / d| below the exact (plane - org) / d; the frustum's own products in float
         // round by as much again. 2^-18 of the axis's span (the tree's largest |coordinate| plus the largest
         // |origin|) times the largest |1 / d| covers both, and 2^-125 the lanes' 2^-126 in t.
         for (int a = 0; a < 3; ++a) {
-            org_lo[a] = org_hi[a] = org[a][0], inv_lo[a] = inv_hi[a] = inv[a][0];
-            for (int i = 1; i < size; ++i) {
-                org_lo[a] = std::min(org_lo[a], org[a][i]), org_hi[a] = std::max(org_hi[a], org[a][i]);
-                inv_lo[a] = std::min(inv_lo[a], inv[a][i]), inv_hi[a] = std::max(inv_hi[a], inv[a][i]);
+            vf olo = get(org[a], 0), ohi = olo, ilo = get(inv[a], 0), ihi = ilo;
+            for (int v = 1; v < V; ++v) {
+                olo = simd::min(olo, get(org[a], v)), ohi = simd::max(ohi, get(org[a], v));
+                ilo = simd::min(ilo, get(inv[a], v)), ihi = simd::max(ihi, get(inv[a], v));
             }
+            org_lo[a] = simd::reduce_min(olo), org_hi[a] = simd::reduce_max(ohi);
+            inv_lo[a] = simd::reduce_min(ilo), inv_hi[a] = simd::reduce_max(ihi);
             const float p = std::max(std::fabs(f.bounds.min[a]), std::fabs(f.bounds.max[a]));
             const float o = std::max(std::fabs(org_lo[a]), std::fabs(org_hi[a]));
             margin[a] = 0x1p-18f * (p + o) * std::max(std::fabs(inv_lo[a]), std::fabs(inv_hi[a])) + 0x1p-125f;
         }
-        t0_lo = t0[0];
-        for (int i = 1; i < size; ++i) t0_lo = std::min(t0_lo, t0[i]);
+        vf lo = get(t0, 0);
+        for (int v = 1; v < V; ++v) lo = simd::min(lo, get(t0, v));
+        t0_lo = simd::reduce_min(lo);
         update_t1_hi();
     }
     void update_t1_hi() {
-        t1_hi = -inf;
-        for (int i = 0; i < size; ++i) t1_hi = std::max(t1_hi, t1[i]);
+        vf hi = get(t1, 0);
+        for (int v = 1; v < V; ++v) hi = simd::max(hi, get(t1, v));
+        t1_hi = simd::reduce_max(hi);
     }
     bool empty() const {
         unsigned any = 0;

@@ -16,10 +16,25 @@
 
 namespace strahl::ch12 {
 
+// What chapter 14 changes in this walk. box: K rays against one box (chapter 12: exercise 12.1's
+// packet_box). leave(lanes, ref): called before the packet enters node or leaf `ref` with `lanes` (on the way
+// down and after a pop); true when it has traced those lanes' rays through `ref` by other means (chapter 14:
+// each alone), so that the packet skips `ref` (chapter 12: never).
+template <bool Coherent>
+struct packet_hooks {
+    template <int K>
+    [[gnu::always_inline]] simd::vmask<K> box(const lane_rays<K>& r, const float* bmin, const float* bmax, int octant,
+                                              simd::vfloat<K>& entry) const {
+        return packet_box<Coherent>(r, bmin, bmax, octant, entry);
+    }
+    static constexpr bool leave(unsigned, std::uint32_t) { return false; }
+};
+
 // Which child a node hands the walk first (chapter 13's visit_order): nearest for closest hit, stored for
 // any hit (no sorting).
-template <bool Nearest, bool Coherent, int K, int N, int M, class Stats, class Leaf>
-void wide_packet_walk(const ch13::wide_bvh<N, M>& tree, ray_packet<K, 1>& p, Stats& stats, Leaf&& leaf) {
+template <bool Nearest, bool Coherent, int K, int N, int M, class Stats, class Leaf, class Hooks = packet_hooks<Coherent>>
+void wide_packet_walk(const ch13::wide_bvh<N, M>& tree, ray_packet<K, 1>& p, Stats& stats, Leaf&& leaf,
+                      Hooks&& hooks = {}) {
     struct entry {
         std::uint32_t ref;
         unsigned lanes;
@@ -33,7 +48,11 @@ void wide_packet_walk(const ch13::wide_bvh<N, M>& tree, ray_packet<K, 1>& p, Sta
     lane_rays<K> r = load(p, 0);
     if (tree.nodes.empty() && !ch13::is_leaf(ref)) return;
     for (;;) {
-        if (!ch13::is_leaf(ref)) {
+        if (hooks.leave(lanes, ref)) {
+            // The lanes' rays went on alone through `ref`: the packet skips it, with their new reach.
+            if (p.active[0] == 0) return;  // any hit: every ray answered
+            r = load(p, 0);
+        } else if (!ch13::is_leaf(ref)) {
             const ch13::wide_node<N>& n = tree.nodes[ref];
             stats.node_visit();
             if constexpr (Coherent) stats.box_test(N);  // the frustum's test
@@ -54,7 +73,7 @@ void wide_packet_walk(const ch13::wide_bvh<N, M>& tree, ray_packet<K, 1>& p, Sta
                 const float bmin[3] = {n.lo[0][c], n.lo[1][c], n.lo[2][c]};
                 const float bmax[3] = {n.hi[0][c], n.hi[1][c], n.hi[2][c]};
                 simd::vfloat<K> t;
-                const simd::vmask<K> enters = packet_box<Coherent>(r, bmin, bmax, p.octant, t);
+                const simd::vmask<K> enters = hooks.box(r, bmin, bmax, p.octant, t);
                 const unsigned in = simd::movemask(enters) & lanes;
                 if (in == 0) continue;
                 // The nearest entry, over every lane that enters (lanes outside `lanes` too: a smaller value

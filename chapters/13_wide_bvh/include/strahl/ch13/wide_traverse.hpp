@@ -154,11 +154,23 @@ enum class visit_order {
               // and the sort costs more than it saves (Embree's any-hit walk does not sort either)
 };
 
-template <visit_order Order, int N, int M, class Slab, class Stats, class Leaf>
-void wide_walk(const wide_bvh<N, M>& tree, const Slab& s, float slack, ray& r, Stats& stats, Leaf&& leaf) {
+// Exercise 13.3's push, as the walk calls it.
+template <int N>
+struct ordered_push {
+    [[gnu::always_inline]] std::uint32_t operator()(unsigned bits, const float* t, const std::uint32_t* child,
+                                                    stack_entry* stack, int& top) const {
+        return push_ordered<N>(bits, t, child, stack, top);
+    }
+};
+
+// start: the node (or leaf) the walk begins at, the root unless chapter 14 hands it a ray further down;
+// push: the ordered push (chapter 14 brings its own).
+template <visit_order Order, int N, int M, class Slab, class Stats, class Leaf, class Push = ordered_push<N>>
+void wide_walk(const wide_bvh<N, M>& tree, const Slab& s, float slack, ray& r, Stats& stats, Leaf&& leaf,
+               std::uint32_t start, Push push = {}) {
     stack_entry stack[ch04::bvh_max_depth * (N - 1) + 2];
     int top = 0;
-    std::uint32_t ref = tree.root_ref;
+    std::uint32_t ref = start;
     for (;;) {
         if (!is_leaf(ref)) {
             const wide_node<N>& n = tree.nodes[ref];
@@ -176,7 +188,7 @@ void wide_walk(const wide_bvh<N, M>& tree, const Slab& s, float slack, ray& r, S
                 t.store(ts);
                 if constexpr (Order == visit_order::nearest) {
                     // Several: the nearest now, the others on the stack (exercise 13.3).
-                    ref = push_ordered<N>(bits, ts, n.child, stack, top);
+                    ref = push(bits, ts, n.child, stack, top);
                 } else {
                     // Several: the first stored now, the others on the stack, the last stored deepest.
                     ref = n.child[std::countr_zero(bits)];
@@ -215,9 +227,9 @@ template <visit_order Order, int N, int M, class Stats, class Leaf>
     bool fast = false;
     const wide_fast_slab<N> s(r, tree.bounds, fast);
     if (fast)
-        wide_walk<Order>(tree, s, slack, r, stats, leaf);
+        wide_walk<Order>(tree, s, slack, r, stats, leaf, tree.root_ref);
     else
-        wide_walk<Order>(tree, wide_robust_slab<N>(r, space_slack(r, tree.bounds)), slack, r, stats, leaf);
+        wide_walk<Order>(tree, wide_robust_slab<N>(r, space_slack(r, tree.bounds)), slack, r, stats, leaf, tree.root_ref);
 }
 
 }  // namespace strahl::ch13

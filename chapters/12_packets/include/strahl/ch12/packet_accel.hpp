@@ -1,0 +1,337 @@
+// The packet tracer behind the accel interface (accel.hpp), as a class template over the walk, K and V. Per
+// packet: each ray checked as tree_query.hpp checks it (an empty interval is a miss; loose primitives
+// first); a ray that no packet can take (not placeable, or a direction the fast slab test refuses) is traced
+// alone by chapter 05's fast walk, which gives the same answers; the others fill the lanes, and the packet
+// goes down the tree.
+//
+// Instantiated where the box test it inlines is defined: chapter 12's walks at the end of packet_tests.cpp
+// (exercises 12.1 to 12.3, packet_accel_impl.hpp); chapter 14's hybrid, a Policy that changes the wide
+// walk's box test and adds the switch to single rays, at the end of its own exercise file.
+#pragma once
+#include "strahl/ch01/primitive_sets.hpp"
+#include "strahl/ch05/fast_traverse.hpp"
+#include "strahl/ch05/sah.hpp"
+#include "strahl/ch12/accel.hpp"
+#include "strahl/ch12/binary_walks.hpp"
+#include "strahl/ch12/frustum_walk.hpp"
+#include "strahl/ch12/partition_walk.hpp"
+#include "strahl/ch12/wide_packet_walk.hpp"
+#include "strahl/ch13/wide_bvh.hpp"
+#include "strahl/tree_query.hpp"
+#include <memory>
+
+namespace strahl::ch12 {
+
+
+// counting, plus the active lanes of every node visit (binary_walks.hpp's count_lanes).
+template <int K>
+struct lane_counting : counting {
+    std::uint64_t visits[K + 1] = {};
+    std::uint64_t lane_sum = 0, node_visits = 0, packets = 0;
+    // Chapter 14: per lane of the packet being traced, node_visits when its ray left the packet (a policy's
+    // switch to single rays), none_left where it has not.
+    static constexpr std::uint64_t none_left = ~std::uint64_t(0);
+    std::uint64_t left_at[K];
+    void lanes(int active, int) { ++visits[active], lane_sum += std::uint64_t(active), ++node_visits; }
+    void left(int lane) {
+        if (left_at[lane] == none_left) left_at[lane] = node_visits;
+    }
+};
+
+// Chapter 12's wide walk: its own box test (exercise 12.1), every ray in the packet to the end.
+struct packets_only {
+    static constexpr bool departures = false;  // per_ray: the packet's mean lane utilisation
+    template <bool Any, bool Coherent, int K, int N, int M, class Stats>
+    packet_hooks<Coherent> hooks(const ch13::wide_bvh<N, M>&, ray_packet<K, 1>&, Stats&) const {
+        return {};
+    }
+};
+
+// A triangle of a binary leaf, in prim_ids order: what the lane test reads (edges as exercise 01.3
+// computes them), 40 bytes.
+struct leaf_triangle {
+    float v0[3], e1[3], e2[3];
+    std::uint32_t id;
+};
+
+// Policy: what the wide walk tests boxes with and whether rays leave the packet (packets_only, or chapter
+// 14's hybrid); the binary-tree walks and the frustum walk ignore it.
+template <walk_kind W, int K, int V, class Policy = packets_only>
+class packet_accel final : public packet_accel_base {
+    static_assert(W == walk_kind::masked || W == walk_kind::wide ? V == 1 : true);
+    static constexpr bool wide_tree = W == walk_kind::wide || W == walk_kind::frustum;
+    // The wide tree's leaves: blocks of this many triangles (the packet tests them one by one; the block size
+    // sets how many the optimal collapse may gather into a leaf).
+    static constexpr int wide_block = 8;
+
+public:
+    packet_accel(std::string name, const packet_config& c, Policy policy = {})
+        : name_(std::move(name)), config_(c), policy_(policy) {}
+
+    std::string name() const override { return name_; }
+    const packet_config& config() const override { return config_; }
+    std::size_t batch_alignment() const override {
+        return config_.image_width > 0 ? std::size_t(config_.tile_h) * std::size_t(config_.image_width) : 1;
+    }
+
+    void build(const scene& s) override {
+        set_ = std::make_unique<ch01::triangle_set>(s.mesh);
+        frame_ = ray_frame(s.mesh.bounds());
+        std::vector<aabb> boxes(s.mesh.triangle_count());
+        std::vector<vec3> centroids(boxes.size());
+        for (std::size_t i = 0; i < boxes.size(); ++i) {
+            const auto t = s.mesh.triangle(i);
+            boxes[i] = aabb{}.grow(t[0]).grow(t[1]).grow(t[2]), centroids[i] = boxes[i].centroid();
+        }
+        ch05::sah_build_params params;
+        params.method = ch05::sah_method::binned, params.bins = 16;
+        binary_ = ch05::build_sah_bvh_fast(boxes, centroids, params);
+        box_ = tree_frame(binary_.bounds);
+        tris_.clear();
+        if constexpr (wide_tree) {
+            ch13::collapse_config cc;
+            cc.method = ch13::collapse_method::optimal;
+            wide_ = ch13::collapse<8, wide_block>(binary_, s.mesh, cc);
+        } else {
+            tris_.resize(binary_.prim_ids.size());
+            for (std::size_t k = 0; k < tris_.size(); ++k) {
+                const auto v = s.mesh.triangle(binary_.prim_ids[k]);
+                const vec3 e1 = v[1] - v[0], e2 = v[2] - v[0];  // as exercise 01.3 computes them
+                for (int a = 0; a < 3; ++a) tris_[k].v0[a] = v[0][a], tris_[k].e1[a] = e1[a], tris_[k].e2[a] = e2[a];
+                tris_[k].id = binary_.prim_ids[k];
+            }
+        }
+    }
+    std::optional<double> sah_cost() const override {
+        if (!set_) return std::nullopt;
+        if constexpr (wide_tree) return wide_.stats.sah;
+        else return ch04::sah_tree_cost(binary_, 1.0f, 1.0f);
+    }
+    // The tree walked, the triangles its leaves read, and the binary tree and triangle set that single rays
+    // and loose primitives use.
+    std::size_t memory_bytes() const override {
+        return binary_.memory_bytes() + binary_.loose.size() * 4 + tris_.size() * sizeof(leaf_triangle) +
+               wide_.memory_bytes() + (set_ ? set_->memory_bytes() : 0);
+    }
+
+    void intersect(std::span<const ray> rays, std::span<hit> hits) const override {
+        not_counting s;
+        run<false>(rays, hits.data(), nullptr, s, nullptr);
+    }
+    void occluded(std::span<const ray> rays, std::span<std::uint8_t> blocked) const override {
+        not_counting s;
+        run<true>(rays, nullptr, blocked.data(), s, nullptr);
+    }
+    std::optional<counter_values> intersect_counted(std::span<const ray> rays, std::span<hit> hits) const override {
+        return closest_lanes(rays, hits, nullptr).counts;
+    }
+    std::optional<counter_values> occluded_counted(std::span<const ray> rays, std::span<std::uint8_t> blocked) const override {
+        return any_lanes(rays, blocked, nullptr).counts;
+    }
+    lane_stats closest_lanes(std::span<const ray> rays, std::span<hit> hits, std::vector<float>* per_ray) const override {
+        lane_counting<K> s;
+        run<false>(rays, hits.data(), nullptr, s, per_ray);
+        return stats_of(s);
+    }
+    lane_stats any_lanes(std::span<const ray> rays, std::span<std::uint8_t> blocked, std::vector<float>* per_ray) const override {
+        lane_counting<K> s;
+        run<true>(rays, nullptr, blocked.data(), s, per_ray);
+        return stats_of(s);
+    }
+
+private:
+    lane_stats stats_of(const lane_counting<K>& s) const {
+        lane_stats l;
+        l.counts = s.values();
+        l.visits.assign(s.visits, s.visits + K + 1);
+        l.packets = s.packets;
+        return l;
+    }
+
+    // Far origins moved to the scene first (ray_frame.hpp), as per_ray_accel does for every structure.
+    template <bool Any, class Stats>
+    void run(std::span<const ray> rays, hit* hits, std::uint8_t* blocked, Stats& stats, std::vector<float>* per_ray) const {
+        if (per_ray) per_ray->assign(rays.size(), -1.0f);
+        if (!set_) {
+            for (std::size_t i = 0; i < rays.size(); ++i) Any ? void(blocked[i] = 0) : void(hits[i] = hit{});
+            return;
+        }
+        if (!frame_.moves_any(rays)) [[likely]]
+            return trace<Any>(rays, hits, blocked, stats, per_ray);
+        std::vector<ray> moved(rays.size());
+        std::vector<float> t0(rays.size());
+        for (std::size_t i = 0; i < rays.size(); ++i) moved[i] = frame_.moved(rays[i], t0[i]);
+        trace<Any>(moved, hits, blocked, stats, per_ray);
+        if constexpr (!Any)
+            for (std::size_t i = 0; i < rays.size(); ++i) hits[i] = ray_frame::moved_back(hits[i], t0[i]);
+    }
+
+    template <bool Any, class Stats>
+    void trace(std::span<const ray> rays, hit* hits, std::uint8_t* blocked, Stats& stats, std::vector<float>* per_ray) const {
+        auto p = std::make_unique<ray_packet<K, V>>();
+        for_each_packet(rays.size(), config_, [&](const std::uint32_t* ids, int count) {
+            p->clear();
+            const auto alone = [&](std::uint32_t i) {
+                if constexpr (Any) blocked[i] = single_any(rays[i], stats) ? 1 : 0;
+                else hits[i] = single_closest(rays[i], stats);
+            };
+            int filled = 0;
+            for (int lane = 0; lane < count; ++lane) {
+                const std::uint32_t i = ids[lane];
+                const ray& q = rays[i];
+                if (!(q.tmin < q.tmax) || !placeable(q) || !binary_.loose.empty()) {
+                    // Alone: empty intervals, rays no tree can place; and every ray of a scene with loose
+                    // primitives (rare: non-finite triangles).
+                    alone(i);
+                    continue;
+                }
+                p->set_ray(filled, q, i);
+                p->best[filled++] = hit{};
+            }
+            if (filled == 0) return;
+            // The lanes' slab terms, K at a time; directions the fast test refuses go alone too.
+            unsigned refused[V];
+            p->set_terms(box_, refused);
+            for (int v = 0; v < V; ++v)
+                for (unsigned b = refused[v]; b != 0; b &= b - 1) {
+                    const int k = v * K + std::countr_zero(b);
+                    alone(p->ray_index[k]);
+                    p->active[v] &= ~(1u << (k % K));
+                }
+            if (p->empty()) return;
+            for (int v = 0; v < V; ++v) stats.ray(std::uint64_t(std::popcount(p->active[v])));
+            p->finish(box_);
+            unsigned held[V];
+            for (int v = 0; v < V; ++v) held[v] = p->active[v];
+            std::uint64_t before = 0, visits_before = 0;
+            if constexpr (requires { stats.lane_sum; }) before = stats.lane_sum, visits_before = stats.node_visits;
+            if constexpr (requires { stats.packets; }) ++stats.packets;
+            if constexpr (requires { stats.left_at; })
+                for (int k = 0; k < K; ++k) stats.left_at[k] = stats.none_left;
+            if (p->coherent) walk<Any, true>(*p, stats);
+            else walk<Any, false>(*p, stats);
+            float used = 0.0f;  // (a packet that misses the root visits no node)
+            if constexpr (requires { stats.lane_sum; })
+                if (stats.node_visits > visits_before)
+                    used = float(double(stats.lane_sum - before) / double(stats.node_visits - visits_before) / K);
+            for (int k = 0; k < K * V; ++k) {
+                if (!((held[k / K] >> (k % K)) & 1u)) continue;
+                const std::uint32_t i = p->ray_index[k];
+                if constexpr (Any) blocked[i] = p->best[k].found() ? 1 : 0;
+                else hits[i] = p->best[k];
+                if (per_ray) (*per_ray)[i] = used;
+                if constexpr (Policy::departures && requires { stats.left_at; }) {
+                    // Chapter 14: the share of the packet's node visits made before the ray left it.
+                    const std::uint64_t at = stats.left_at[k % K], all = stats.node_visits - visits_before;
+                    if (per_ray && at != stats.none_left)
+                        (*per_ray)[i] = all > 0 ? float(double(at - visits_before) / double(all)) : 0.0f;
+                    else if (per_ray) (*per_ray)[i] = 1.0f;
+                }
+            }
+        });
+    }
+
+    // The leaf test on a packet's lanes: closest hit records (chapter 01's rule, per lane); any hit marks
+    // the lane answered and takes it out of the packet.
+    template <bool Any, class Stats>
+    [[gnu::always_inline]] bool test_triangle(ray_packet<K, V>& p, const lane_rays<K>& r, unsigned& lanes, auto at,
+                                              const float* v0, const float* e1, const float* e2, std::uint32_t id,
+                                              Stats& stats) const {
+        stats.prim_test(std::popcount(lanes));
+        simd::vfloat<K> t, u, w;
+        const unsigned b = packet_triangle(r, v0, e1, e2, t, u, w) & lanes;
+        if (b == 0) return false;
+        if constexpr (Any) {
+            for (unsigned x = b; x != 0; x &= x - 1) {
+                const int i = at(std::countr_zero(x));
+                p.active[i / K] &= ~(1u << (i % K));
+                p.best[i].prim = id;
+            }
+            lanes &= ~b;
+        } else {
+            packet_record(p, b, at, id, t, u, w);
+        }
+        return true;
+    }
+
+    // The triangles of a wide leaf (blocks of 4) against the lanes of one vector; whether any lane hit.
+    template <bool Any, class Stats>
+    [[gnu::always_inline]] bool wide_leaf(ray_packet<K, V>& p, const lane_rays<K>& r, unsigned lanes, auto at,
+                                          std::uint32_t ref, Stats& stats) const {
+        bool any = false;
+        const ch13::triangle_block<wide_block>* b = &wide_.blocks[ch13::leaf_first(ref)];
+        for (std::uint32_t k = ch13::leaf_blocks(ref); k-- > 0 && lanes != 0; ++b)
+            for (int i = 0; i < wide_block && lanes != 0; ++i) {
+                if (i > 0 && b->id[i] == b->id[i - 1]) break;  // lanes past the leaf's end repeat its last
+                const float v0[3] = {b->v0[0][i], b->v0[1][i], b->v0[2][i]};
+                const float e1[3] = {b->e1[0][i], b->e1[1][i], b->e1[2][i]};
+                const float e2[3] = {b->e2[0][i], b->e2[1][i], b->e2[2][i]};
+                any |= test_triangle<Any>(p, r, lanes, at, v0, e1, e2, b->id[i], stats);
+            }
+        return any;
+    }
+
+    template <bool Any, bool Coherent, class Stats>
+    void walk(ray_packet<K, V>& p, Stats& stats) const {
+        if constexpr (W == walk_kind::frustum && Coherent) {
+            const auto leaf = [&](const lane_rays<K>& r, unsigned lanes, auto at, std::uint32_t ref, const float* bmin,
+                                  const float* bmax) {
+                // The vector against the leaf's box first: only its lanes that enter test the triangles.
+                simd::vfloat<K> t;
+                stats.box_test(std::popcount(lanes));
+                const unsigned in = simd::movemask(packet_box<true>(r, bmin, bmax, p.octant, t)) & lanes;
+                count_lanes(stats, std::popcount(in), K);
+                if (in != 0 && wide_leaf<Any>(p, r, in, at, ref, stats) && !Any) p.update_t1_hi();
+            };
+            frustum_walk<!Any>(wide_, p, stats, leaf);
+        } else if constexpr (wide_tree) {
+            static_assert(W == walk_kind::wide || V == 1, "mixed octants in large packets: not built");
+            const auto leaf = [&](const lane_rays<K>& r, unsigned lanes, auto at, std::uint32_t ref) {
+                wide_leaf<Any>(p, r, lanes, at, ref, stats);
+            };
+            wide_packet_walk<!Any, Coherent>(wide_, p, stats, leaf,
+                                             policy_.template hooks<Any, Coherent>(wide_, p, stats));
+        } else {
+            const auto leaf = [&](const lane_rays<K>& r, unsigned lanes, auto at, std::uint32_t first, std::uint32_t count) {
+                for (std::uint32_t k = 0; k < count && lanes != 0; ++k) {
+                    const leaf_triangle& t = tris_[first + k];
+                    test_triangle<Any>(p, r, lanes, at, t.v0, t.e1, t.e2, t.id, stats);
+                }
+                if constexpr (!Any && V > 1) p.update_t1_hi();
+            };
+            if constexpr (W == walk_kind::masked) masked_walk<Coherent>(binary_, p, stats, leaf);
+            else if constexpr (W == walk_kind::ranged) ranged_walk<Coherent>(binary_, p, stats, leaf);
+            else partition_walk<Coherent>(binary_, p, stats, leaf);
+        }
+    }
+
+    // A ray traced alone: chapter 05's fast walk over the same binary tree (its exact answers).
+    template <class Stats>
+    hit single_closest(const ray& q, Stats& stats) const {
+        return tree_closest(*set_, binary_.loose, q, stats, [&](ray& r, auto&& leaf) {
+            ch05::fast_traverse(binary_, r, stats, [&](std::uint32_t first, std::uint32_t count) {
+                return leaf(binary_.prim_ids.data() + first, count);
+            });
+        });
+    }
+    template <class Stats>
+    bool single_any(const ray& q, Stats& stats) const {
+        return tree_any(*set_, binary_.loose, q, stats, [&](ray& r, auto&& leaf) {
+            ch05::fast_traverse(binary_, r, stats, [&](std::uint32_t first, std::uint32_t count) {
+                return leaf(binary_.prim_ids.data() + first, count);
+            });
+        });
+    }
+
+    std::string name_;
+    packet_config config_;
+    Policy policy_;
+    std::unique_ptr<ch01::triangle_set> set_;
+    ray_frame frame_;
+    ch04::bvh binary_;
+    tree_frame box_;
+    std::vector<leaf_triangle> tris_;
+    ch13::wide_bvh<8, wide_block> wide_;
+};
+
+}  // namespace strahl::ch12

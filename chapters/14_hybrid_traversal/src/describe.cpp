@@ -1,0 +1,20 @@
+// Names of chapter 14's hybrid tracers.
+#include "strahl/ch14/accel.hpp"
+#include <string>
+
+namespace strahl::ch14 {
+
+std::string threshold_name(int threshold) {
+    return threshold == automatic ? std::string("auto") : std::to_string(threshold);
+}
+
+std::string describe(const hybrid_config& c) {
+    const std::string s = "hybrid, " + std::to_string(c.lanes) + " lanes, " + std::to_string(c.tile_w) + "x" +
+                          std::to_string(c.tile_h) + " tiles, ";
+    if (c.threshold == automatic) return s + "threshold per packet from its coherence";
+    if (c.threshold == 0) return s + "rays never leave the packet";
+    if (c.threshold == c.lanes) return s + "every ray alone from the root";
+    return s + "rays leave at <= " + std::to_string(c.threshold) + " active lanes";
+}
+
+}  // namespace strahl::ch14

@@ -1,0 +1,74 @@
+// Exercises 14.1 one slab test for both kinds of lanes (3 points), 14.2 the switch's threshold from the
+// packet's coherence (3 points) and 14.3 the hand-off (4 points). Read: C. Benthin, I. Wald, S. Woop,
+// M. Ernst and W. R. Mark, "Combining single and packet-ray tracing for arbitrary ray distributions on the
+// Intel MIC architecture", IEEE TVCG 18(9), 2012, sections 4 and 5; chapter 05's slab_test.hpp.
+#include "strahl/ch14/hybrid_walk.hpp"
+
+namespace strahl::ch14 {
+
+// 14.1: chapter 05's fast test on L lanes, whatever the lanes hold.
+template <int L>
+[[gnu::always_inline]] inline simd::vmask<L> lane_slab(const simd::vfloat<L> (&near)[3], const simd::vfloat<L> (&far)[3],
+                                                       const simd::vfloat<L> (&inv)[3],
+                                                       const simd::vfloat<L> (&org_near)[3],
+                                                       const simd::vfloat<L> (&org_far)[3], simd::vfloat<L> t0,
+                                                       simd::vfloat<L> t1, simd::vfloat<L>& entry) {
+    using vf = simd::vfloat<L>;
+    vf lo = t0, hi = t1;
+    for (int a = 0; a < 3; ++a) {
+        vf n, f;
+        if constexpr (ch05::fused_plane_default)
+            n = simd::fmsub(near[a], inv[a], org_near[a]), f = simd::fmsub(far[a], inv[a], org_far[a]);
+        else
+            n = near[a] * inv[a] - org_near[a], f = far[a] * inv[a] - org_far[a];
+        lo = simd::max(n, lo);  // n > lo ? n : lo
+        hi = simd::min(f, hi);  // f < hi ? f : hi
+    }
+    entry = lo;
+    return lo <= hi;
+}
+
+// 14.2: the octant of every active lane, and per axis the range of the unit directions' components.
+template <int K>
+coherence packet_coherence(const ch12::ray_packet<K, 1>& p) {
+    coherence c;
+    float lo[3] = {inf, inf, inf}, hi[3] = {-inf, -inf, -inf};
+    int octant = -1;
+    for (unsigned bits = p.active[0]; bits != 0; bits &= bits - 1) {
+        const int k = std::countr_zero(bits);
+        const vec3 d = glm::normalize(vec3(p.dir[0][k], p.dir[1][k], p.dir[2][k]));
+        const int o = int(std::signbit(d.x)) | int(std::signbit(d.y)) << 1 | int(std::signbit(d.z)) << 2;
+        if (octant >= 0 && o != octant) c.one_octant = false;
+        octant = o;
+        for (int a = 0; a < 3; ++a) lo[a] = std::min(lo[a], d[a]), hi[a] = std::max(hi[a], d[a]);
+    }
+    for (int a = 0; a < 3 && octant >= 0; ++a) c.spread = std::max(c.spread, hi[a] - lo[a]);
+    return c;
+}
+
+int packet_threshold(const coherence& c, int lanes, const threshold_rule& rule) {
+    return c.one_octant && c.spread < rule.tight ? lanes / 4 : lanes / 2;
+}
+
+// 14.3: out of the packet, traced alone, the answer back into the lane.
+template <bool Any, int K, class Alone>
+[[gnu::always_inline]] inline void hand_off(ch12::ray_packet<K, 1>& p, unsigned lanes, Alone&& alone) {
+    for (; lanes != 0; lanes &= lanes - 1) {
+        const int k = std::countr_zero(lanes);
+        lone_ray l;
+        l.r = ray{{p.org[0][k], p.org[1][k], p.org[2][k]}, {p.dir[0][k], p.dir[1][k], p.dir[2][k]}, p.tmin[k], p.tmax[k]};
+        l.slack = p.slack[k];
+        l.best = p.best[k];
+        alone(k, l);
+        if constexpr (Any) {
+            if (l.blocked) p.best[k].prim = l.best.prim, p.active[0] &= ~(1u << k);
+        } else {
+            p.best[k] = l.best, p.tmax[k] = l.r.tmax, p.t1[k] = l.r.tmax + p.slack[k];
+        }
+    }
+}
+
+}  // namespace strahl::ch14
+
+// The hybrid tracers compiled here, with the functions above inlined into them.
+#include "strahl/ch14/hybrid_accel_impl.hpp"

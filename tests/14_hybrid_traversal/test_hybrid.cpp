@@ -1,0 +1,165 @@
+// Chapter 14 beyond the exercises (0 points): the hybrid tracer answers exactly as brute force does at every
+// threshold (never leaving, leaving at 1, 2, K/4, K/2, K-2, K-1 lanes, every ray alone from the root, and the
+// threshold chosen per packet), on tiles of real ray sets, on rays made to break it, on ties and degenerate
+// scenes and far from the origin; rays leave where the threshold says; the renderer's image is unchanged.
+#include "strahl/ch01/ray_sets.hpp"
+#include "strahl/ch05/accel.hpp"
+#include "strahl/ch05/sah.hpp"
+#include "strahl/ch12/render.hpp"
+#include "strahl/ch13/accel.hpp"
+#include "strahl/ch14/accel.hpp"
+#include "strahl/procedural.hpp"
+#include "bvh_rays.hpp"
+#include "exactness.hpp"
+#include "test_support.hpp"
+#include <catch2/catch.hpp>
+#include <cstring>
+
+using namespace strahl;
+using namespace strahl::ch14;
+
+namespace {
+
+std::vector<hybrid_config> all_configs(int width) {
+    std::vector<hybrid_config> out;
+    for (const int k : {8, 16})
+        for (const int t : {0, 1, 2, k / 4, k / 2, k - 2, k - 1, k, automatic}) {
+            if (k == 8 && t == 2 && !out.empty() && out.back().threshold == 2) continue;  // K/4 = 2 for K = 8
+            out.push_back({k, 4, k / 4, width, t});
+        }
+    return out;
+}
+
+ch04::bvh binary(const triangle_mesh& m) {
+    std::vector<aabb> boxes(m.triangle_count());
+    std::vector<vec3> centroids(boxes.size());
+    for (std::size_t i = 0; i < boxes.size(); ++i) {
+        const auto t = m.triangle(i);
+        boxes[i] = aabb().grow(t[0]).grow(t[1]).grow(t[2]), centroids[i] = boxes[i].centroid();
+    }
+    return ch05::build_sah_bvh_fast(boxes, centroids);
+}
+
+void check_exact(const scene& s, const std::vector<ray>& rays, int width) {
+    for (const hybrid_config& c : all_configs(width)) {
+        const auto a = make_accel("test", c);
+        a->build(s);
+        INFO(describe(c) << ", rows of " << width << ", " << rays.size() << " rays, " << s.mesh.triangle_count() << " triangles");
+        CHECK(test::disagreements_with_brute_force(*a, s.mesh, rays) == 0);
+    }
+}
+
+std::vector<ray> image_rays(const scene& s, int w, int h, ch01::ray_kind kind) {
+    const auto exact = ch05::make_accel(false, {}, ch05::walk_kind::fast);
+    exact->build(s);
+    return ch01::make_rays(kind, s, w, h, 7, *exact);
+}
+
+}  // namespace
+
+TEST_CASE("ch14 hybrid: equals brute force at every threshold on tiles of the teapot's primary, diffuse and "
+          "shadow rays", "[ch14]") {
+    const scene s = teapot_scene(4);
+    for (const ch01::ray_kind kind : {ch01::ray_kind::primary, ch01::ray_kind::diffuse, ch01::ray_kind::shadow}) {
+        INFO(ch01::to_string(kind) << " rays");
+        check_exact(s, image_rays(s, 36, 27, kind), 36);
+    }
+}
+
+TEST_CASE("ch14 hybrid: equals brute force on rays made to break it, on ties, degenerate and far scenes",
+          "[ch14][adversarial]") {
+    {
+        const scene s = teapot_scene(3);
+        std::vector<ray> rays = test::nasty_rays(binary(s.mesh), 200, 31);
+        for (const float tiny : {1e-40f, -1e-42f, 1e-30f, 1e-20f})
+            rays.push_back({vec3(0.1f, 0.2f, -3.0f), vec3(tiny, 0.05f, 1.0f)});
+        rays.push_back({vec3(0.0f, 0.3f, -3.0f), vec3(0, 0, 1), 2.0f, 2.0f});
+        rays.push_back({vec3(0.0f, 0.3f, 0.0f), vec3(0, 0, 1), -5.0f, inf});
+        check_exact(s, rays, 0);
+        check_exact(s, rays, 16);  // rows of 16: tiles of unrelated rays, every octant mixed
+    }
+    const auto rays_for = [](const triangle_mesh& m) { return test::nasty_rays(binary(m), 120, 5); };
+    const triangle_mesh ties = test::copies(300, vec3(0, 0, 0), vec3(1, 0, 0), vec3(0, 1, 0));
+    check_exact(test::mesh_only(ties), rays_for(ties), 0);
+    const triangle_mesh one = test::copies(1, vec3(0, 0, 0), vec3(1, 0, 0), vec3(0, 1, 0));
+    check_exact(test::mesh_only(one), rays_for(one), 8);
+    check_exact(test::mesh_only(triangle_mesh{}), rays_for(one), 0);
+    scene far = teapot_scene(3);
+    for (vec3& p : far.mesh.positions) p += vec3(3e4f, -1e5f, 2e4f);
+    std::vector<ray> rays = test::nasty_rays(binary(far.mesh), 150, 9);
+    const vec3 c = far.mesh.bounds().centroid();
+    for (int i = 0; i < 40; ++i) {  // origins 1e9 away, aimed at the teapot (ray_frame moves them)
+        const vec3 o = c + vec3(1e9f, 3e8f * float(i % 5), -2e8f);
+        rays.push_back({o, c + vec3(0.01f * float(i), 0.0f, 0.0f) - o});
+    }
+    check_exact(far, rays, 0);
+}
+
+TEST_CASE("ch14 hybrid: rays leave where the threshold says, and never leaving is chapter 12's wide walk", "[ch14]") {
+    const scene s = teapot_scene(4);
+    const std::vector<ray> rays = image_rays(s, 64, 48, ch01::ray_kind::primary);
+    std::vector<hit> hits(rays.size());
+    std::vector<float> left;
+    const auto lanes_at = [&](int threshold) {
+        const auto a = make_accel("test", {16, 4, 4, 64, threshold});
+        a->build(s);
+        return a->closest_lanes(rays, hits, &left);
+    };
+    // Never: chapter 12's 16-lane wide walk visits the same nodes with the same lanes, and no ray leaves.
+    const auto ch12 = ch12::make_accel("wide", {ch12::walk_kind::wide, 16, 4, 4, 64});
+    ch12->build(s);
+    const ch12::lane_stats packets = ch12->closest_lanes(rays, hits, nullptr);
+    const ch12::lane_stats never = lanes_at(0);
+    CHECK(never.counts.nodes_visited == packets.counts.nodes_visited);
+    CHECK(never.visits == packets.visits);
+    for (const float f : left) CHECK(f == 1.0f);
+    // At the root: no node is visited with its lanes by a packet (every visit is a ray's alone), every ray
+    // leaves at once, and the packets' box tests are gone.
+    const ch12::lane_stats root = lanes_at(16);
+    std::uint64_t packet_visits = 0;
+    for (const std::uint64_t v : root.visits) packet_visits += v;
+    CHECK(packet_visits == 0);
+    for (const float f : left) CHECK((f == 0.0f || f == -1.0f));
+    // In between: no packet visits a node with `threshold` lanes or fewer; every share of visits lies in [0, 1].
+    for (const int t : {1, 2, 4, 8, 14, 15}) {
+        INFO("threshold " << t);
+        const ch12::lane_stats l = lanes_at(t);
+        for (int k = 0; k <= t; ++k) CHECK(l.visits[std::size_t(k)] == 0);
+        for (const float f : left) CHECK((f >= 0.0f && f <= 1.0f));
+    }
+}
+
+TEST_CASE("ch14 hybrid: chapter 12's renderer with the hybrid tracer draws the single-ray image bit for bit", "[ch14]") {
+    scene s = teapot_in_stadium(4, 16);
+    s.materials.push_back({});
+    s.materials.back().kind = material_kind::mirror;
+    s.triangle_materials.resize(s.mesh.triangle_count());
+    for (std::size_t i = 0; i < s.triangle_materials.size(); ++i)
+        s.triangle_materials[i] = i % 3 == 0 ? std::uint32_t(s.materials.size() - 1) : 0u;
+    const camera cam = scene_camera(s, 37, 29);
+    ch01::render_settings settings;
+    settings.max_depth = 3;
+    ch13::wide_config wc;
+    wc.collapse.method = ch13::collapse_method::optimal;
+    const auto single = ch13::make_accel("single", [](std::span<const aabb> b, std::span<const vec3> c) {
+        return ch05::build_sah_bvh_fast(b, c);
+    }, wc);
+    single->build(s);
+    const ch01::render_result want = ch12::render_single(*single, s, cam, settings, 0);
+    for (const int t : {0, 4, 16, automatic}) {
+        const auto hybrid = make_accel("hybrid", {16, 4, 4, 0, t});
+        hybrid->build(s);
+        const ch01::render_result got = ch12::render_packets(*hybrid, *hybrid, s, cam, settings, 0);
+        INFO("threshold " << threshold_name(t));
+        REQUIRE(got.img.pixels.size() == want.img.pixels.size());
+        CHECK(std::memcmp(got.img.pixels.data(), want.img.pixels.data(), want.img.pixels.size() * sizeof(color)) == 0);
+        CHECK(got.counts.total() == want.counts.total());
+        CHECK(got.rays_per_pixel == want.rays_per_pixel);
+    }
+}
+
+TEST_CASE("ch14 hybrid: configurations not built are refused, naming what is", "[ch14]") {
+    CHECK_THROWS_WITH(make_accel("x", {16, 8, 2, 0, 0}), Catch::Contains("built: 8 lanes 4x2"));
+    CHECK_THROWS_WITH(make_accel("x", {16, 4, 4, 0, 17}), Catch::Contains("threshold 17"));
+    CHECK_THROWS_WITH(make_accel("x", {8, 4, 2, 0, -2}), Catch::Contains("not in 0..8"));
+}
