@@ -61,6 +61,9 @@ case $nn in
     sized=() ;;
 13) args=(--quick --width 32 --repeats 1 --out "$out") files=(wide.csv speedup.svg)
     sized=() ;;
+14) args=(--quick --width 32 --repeats 1 --flight-frames 2 --flight-width 64 --flight-height 36 --out "$out")
+    files=(sweep.csv threshold.svg stadium_left.png flight.csv flight_first.png flight_last.png)
+    sized=(flight_first.png:"64 36" flight_last.png:"64 36") ;;
 15) args=(--quick --out "$out") files=(escapes.csv spawn.csv far.csv table.csv escape_vs_speed.svg)
     sized=() ;;
 *) echo "$0: no end-to-end run known for chapter $nn" >&2; exit 2 ;;

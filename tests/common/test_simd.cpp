@@ -251,7 +251,7 @@ TEST_CASE("simd: broadcast, aligned and unaligned load and store, lane access an
     });
 }
 
-TEST_CASE("simd: arithmetic (plus, minus, times, divide, negate) rounds like scalar float, lane by lane",
+TEST_CASE("simd: arithmetic (plus, minus, times, divide, negate, square root) rounds like scalar float, lane by lane",
           "[common][simd]") {
     for_each_backend([]<class V>(std::type_identity<V>) {
         check_same_as_scalar<V>("a + b", [](auto a, auto b, auto) { return a + b; }, false);
@@ -264,6 +264,8 @@ TEST_CASE("simd: arithmetic (plus, minus, times, divide, negate) rounds like sca
                                 [](auto a, auto b, auto c) { return (a - b) * c / (a + c); }, false);
         check_float_op<V>("a + broadcast 0.1", [](V a, V, V) { return a + V(0.1f); },
                           [](float x, float, float) { return x + 0.1f; }, false);
+        check_float_op<V>("sqrt(a)", [](V a, V, V) { return sqrt(a); },
+                          [](float x, float, float) { return std::sqrt(x); }, false);
     });
 }
 

@@ -165,6 +165,9 @@ template <int N> generic_vfloat<N> max(generic_vfloat<N> a, generic_vfloat<N> b)
 template <int N> generic_vfloat<N> fmadd(generic_vfloat<N> a, generic_vfloat<N> b, generic_vfloat<N> c) {
     return detail::fma_lanes(a, b, c);
 }
+template <int N> generic_vfloat<N> sqrt(generic_vfloat<N> a) {
+    return detail::each(a, [&](int i) { return std::sqrt(a[i]); });
+}
 
 // Comparisons (IEEE: false where a lane is NaN, except !=), and select(m, a, b): a where m is set, else b.
 template <int N> generic_vmask<N> operator<(generic_vfloat<N> a, generic_vfloat<N> b) {
@@ -282,6 +285,7 @@ inline float4 operator*(float4 a, float4 b) { return _mm_mul_ps(a.m, b.m); }
 inline float4 operator/(float4 a, float4 b) { return _mm_div_ps(a.m, b.m); }
 inline float4 operator-(float4 a) { return _mm_xor_ps(a.m, _mm_set1_ps(-0.0f)); }  // flips the sign bit, as -x
 inline float4 min(float4 a, float4 b) { return _mm_min_ps(a.m, b.m); }
+inline float4 sqrt(float4 a) { return _mm_sqrt_ps(a.m); }  // correctly rounded, as std::sqrt
 inline float4 max(float4 a, float4 b) { return _mm_max_ps(a.m, b.m); }
 #if defined(__FMA__)
 inline float4 fmadd(float4 a, float4 b, float4 c) { return _mm_fmadd_ps(a.m, b.m, c.m); }
@@ -398,6 +402,7 @@ inline float8 operator*(float8 a, float8 b) { return _mm256_mul_ps(a.m, b.m); }
 inline float8 operator/(float8 a, float8 b) { return _mm256_div_ps(a.m, b.m); }
 inline float8 operator-(float8 a) { return _mm256_xor_ps(a.m, _mm256_set1_ps(-0.0f)); }
 inline float8 min(float8 a, float8 b) { return _mm256_min_ps(a.m, b.m); }
+inline float8 sqrt(float8 a) { return _mm256_sqrt_ps(a.m); }
 inline float8 max(float8 a, float8 b) { return _mm256_max_ps(a.m, b.m); }
 #if defined(__FMA__)
 inline float8 fmadd(float8 a, float8 b, float8 c) { return _mm256_fmadd_ps(a.m, b.m, c.m); }
@@ -486,6 +491,7 @@ inline float16 operator-(float16 a) {  // AVX-512F has no float xor: flip the si
     return _mm512_castsi512_ps(_mm512_xor_si512(_mm512_castps_si512(a.m), _mm512_set1_epi32(-0x7fffffff - 1)));
 }
 inline float16 min(float16 a, float16 b) { return _mm512_min_ps(a.m, b.m); }
+inline float16 sqrt(float16 a) { return _mm512_sqrt_ps(a.m); }
 inline float16 max(float16 a, float16 b) { return _mm512_max_ps(a.m, b.m); }
 inline float16 fmadd(float16 a, float16 b, float16 c) { return _mm512_fmadd_ps(a.m, b.m, c.m); }
 
