@@ -13,24 +13,13 @@ std::unique_ptr<accel> make_embree_tracer() {
 
 #else
 
+#include "strahl/denormals.hpp"
 #include <cmath>
 #include <embree3/rtcore.h>
-#include <xmmintrin.h>
 
 namespace strahl::ch14 {
 
 namespace {
-
-// MXCSR's flush-to-zero (bit 15) and denormals-are-zero (bit 6), set while alive (Embree's documentation
-// asks for both on every thread that traces): per call, since any thread may call.
-class denormals_flushed {
-public:
-    denormals_flushed() : saved_(_mm_getcsr()) { _mm_setcsr(saved_ | (1u << 15) | (1u << 6)); }
-    ~denormals_flushed() { _mm_setcsr(saved_); }
-
-private:
-    unsigned saved_;
-};
 
 // The course's interval is open, (tmin, tmax); Embree's closed: its tfar one float below tmax.
 void to_embree(const ray& r, RTCRay& e) {

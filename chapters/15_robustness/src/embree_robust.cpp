@@ -15,23 +15,12 @@ std::vector<std::uint8_t> embree_found(const triangle_mesh&, std::span<const ray
 #else
 
 #include "strahl/parallel.hpp"
+#include "strahl/denormals.hpp"
 #include <embree3/rtcore.h>
-#include <xmmintrin.h>
 
 namespace strahl::ch15 {
 
 namespace {
-
-// MXCSR's flush-to-zero (bit 15) and denormals-are-zero (bit 6), set while alive (Embree's documentation
-// asks for both on every thread that traces).
-class denormals_flushed {
-public:
-    denormals_flushed() : saved_(_mm_getcsr()) { _mm_setcsr(saved_ | (1u << 15) | (1u << 6)); }
-    ~denormals_flushed() { _mm_setcsr(saved_); }
-
-private:
-    unsigned saved_;
-};
 
 void check(RTCDevice device, const char* what) {
     if (const RTCError e = rtcGetDeviceError(device); e != RTC_ERROR_NONE)

@@ -1,23 +1,7 @@
 #include "strahl/race/embree_accel.hpp"
 #include <stdexcept>
-#if defined(__SSE__)
-#include <xmmintrin.h>
-#endif
 
 namespace strahl::race {
-
-// MXCSR bit 15 is flush-to-zero (results that would be denormal become 0), bit 6 denormals-are-zero
-// (denormal inputs read as 0).
-#if defined(__SSE__)
-constexpr unsigned ftz_daz_bits = (1u << 15) | (1u << 6);
-denormals_flushed::denormals_flushed() : saved_(_mm_getcsr()) { _mm_setcsr(saved_ | ftz_daz_bits); }
-denormals_flushed::~denormals_flushed() { _mm_setcsr(saved_); }
-bool denormals_are_flushed() { return (_mm_getcsr() & ftz_daz_bits) == ftz_daz_bits; }
-#else
-denormals_flushed::denormals_flushed() {}
-denormals_flushed::~denormals_flushed() {}
-bool denormals_are_flushed() { return false; }
-#endif
 
 std::string embree_report::summary() const {
     if (version.empty()) return "no Embree";

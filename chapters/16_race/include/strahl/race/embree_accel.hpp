@@ -13,6 +13,7 @@
 //   so tfar is tmax moved inwards by one ulp.
 #pragma once
 #include "strahl/accel.hpp"
+#include "strahl/denormals.hpp"
 #include <atomic>
 #include <cstdint>
 #include <memory>
@@ -75,20 +76,8 @@ struct embree_report {
 };
 const embree_report& embree_configuration();
 
-// Sets flush-to-zero and denormals-are-zero in this thread's MXCSR for its lifetime, then restores it.
-// Embree wants both on (its documentation, and a warning in its verbose report); the course wants neither.
-class denormals_flushed {
-public:
-    denormals_flushed();
-    ~denormals_flushed();
-    denormals_flushed(const denormals_flushed&) = delete;
-    denormals_flushed& operator=(const denormals_flushed&) = delete;
-
-private:
-    unsigned saved_ = 0;
-};
-
-// This thread's flush-to-zero and denormals-are-zero bits: both set (true) or not.
-bool denormals_are_flushed();
+// Flush-to-zero and denormals-are-zero around Embree's calls (strahl/denormals.hpp).
+using strahl::denormals_are_flushed;
+using strahl::denormals_flushed;
 
 }  // namespace strahl::race
