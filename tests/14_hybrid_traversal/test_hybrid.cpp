@@ -13,6 +13,7 @@
 #include "exactness.hpp"
 #include "test_support.hpp"
 #include <catch2/catch.hpp>
+#include <algorithm>
 #include <cstring>
 
 using namespace strahl;
@@ -121,12 +122,18 @@ TEST_CASE("ch14 hybrid: rays leave where the threshold says, and never leaving i
     CHECK(packet_visits == 0);
     for (const float f : left) CHECK((f == 0.0f || f == -1.0f));
     // In between: no packet visits a node with `threshold` lanes or fewer; every share of visits lies in [0, 1].
+    // More rays leave the higher the threshold (a ray that left reads below 1, even after its packet's last visit).
+    std::size_t before = 0;
     for (const int t : {1, 2, 4, 8, 14, 15}) {
         INFO("threshold " << t);
         const ch12::lane_stats l = lanes_at(t);
         for (int k = 0; k <= t; ++k) CHECK(l.visits[std::size_t(k)] == 0);
         for (const float f : left) CHECK((f >= 0.0f && f <= 1.0f));
+        const std::size_t gone = std::size_t(std::count_if(left.begin(), left.end(), [](float f) { return f < 1.0f; }));
+        CHECK(gone >= before);
+        before = gone;
     }
+    CHECK(before > rays.size() / 10);
 }
 
 TEST_CASE("ch14 hybrid: chapter 12's renderer with the hybrid tracer draws the single-ray image bit for bit", "[ch14]") {

@@ -75,3 +75,26 @@ TEST_CASE("ch16 measure: the race counts exactly the rays that differ from the r
     any[any.size() / 2] ^= 1;
     CHECK(measure_any(brute, shadow, any, rules).differing == 2);
 }
+
+TEST_CASE("ch16 measure: the counting sample takes whole blocks (a packet tracer's tile rows), at most about the limit",
+          "[ch16][measure]") {
+    std::vector<ray> rays(1000);
+    for (std::size_t i = 0; i < rays.size(); ++i) rays[i].tmin = float(i);
+    const auto index = [](const ray& r) { return std::size_t(r.tmin); };
+    // One ray a block: every k-th ray, as before.
+    const std::vector<ray> single = counting_sample(rays, 100, 1);
+    REQUIRE(single.size() == 100);
+    for (std::size_t i = 0; i < single.size(); ++i) CHECK(index(single[i]) == 10 * i);
+    // Blocks of 64 (the last one short): whole blocks starting on multiples of 64, runs of consecutive rays.
+    const std::vector<ray> blocks = counting_sample(rays, 200, 64);
+    REQUIRE(!blocks.empty());
+    CHECK(blocks.size() <= 256);
+    for (std::size_t i = 0; i < blocks.size(); ++i) {
+        const std::size_t at = index(blocks[i]);
+        if (i == 0 || index(blocks[i - 1]) + 1 != at) CHECK(at % 64 == 0);  // a block starts
+        if (i + 1 == blocks.size() || index(blocks[i + 1]) != at + 1) CHECK(((at + 1) % 64 == 0 || at == 999));
+    }
+    // A limit below one block still counts one block; an empty batch gives nothing.
+    CHECK(counting_sample(rays, 10, 64).size() == 64);
+    CHECK(counting_sample(std::vector<ray>{}, 100, 64).empty());
+}

@@ -28,14 +28,6 @@ std::vector<double> time_runs(const timing_rules& rules, Run&& run) {
     return seconds;
 }
 
-// Every k-th ray, at most `limit` of them: the counting run's sample.
-std::vector<ray> sample(std::span<const ray> rays, std::size_t limit) {
-    const std::size_t stride = std::max<std::size_t>(1, (rays.size() + limit - 1) / std::max<std::size_t>(1, limit));
-    std::vector<ray> out;
-    for (std::size_t i = 0; i < rays.size(); i += stride) out.push_back(rays[i]);
-    return out;
-}
-
 void per_ray(query_result& q, const std::optional<counter_values>& c) {
     if (!c || c->rays == 0) return;
     q.box_per_ray = c->per_ray(c->box_tests);
@@ -44,6 +36,19 @@ void per_ray(query_result& q, const std::optional<counter_values>& c) {
 }
 
 }  // namespace
+
+std::vector<ray> counting_sample(std::span<const ray> rays, std::size_t limit, std::size_t block) {
+    block = std::max<std::size_t>(1, block);
+    const std::size_t blocks = (rays.size() + block - 1) / block;
+    const std::size_t wanted = std::max<std::size_t>(1, limit / block);
+    const std::size_t stride = std::max<std::size_t>(1, (blocks + wanted - 1) / wanted);
+    std::vector<ray> out;
+    for (std::size_t b = 0; b < blocks; b += stride) {
+        const std::size_t first = b * block, last = std::min(rays.size(), first + block);
+        out.insert(out.end(), rays.begin() + std::ptrdiff_t(first), rays.begin() + std::ptrdiff_t(last));
+    }
+    return out;
+}
 
 bool agrees(const hit& a, const hit& b, bool exact) {
     if (!a.found() || !b.found()) return a.found() == b.found();
@@ -67,7 +72,7 @@ query_result measure_closest(const accel& a, std::span<const ray> rays, const st
     q.runs = int(s.size());
     q.mrays = rays.empty() ? 0.0 : double(rays.size()) / median(s) / 1e6;
     for (std::size_t i = 0; i < rays.size(); ++i) q.differing += !agrees(hits[i], ref[i], a.exact());
-    const std::vector<ray> few = sample(rays, rules.count_rays);
+    const std::vector<ray> few = counting_sample(rays, rules.count_rays, a.batch_alignment());
     std::vector<hit> few_hits(few.size());
     per_ray(q, a.intersect_counted(few, few_hits));
     return q;
@@ -82,7 +87,7 @@ query_result measure_any(const accel& a, std::span<const ray> rays, const std::v
     q.runs = int(s.size());
     q.mrays = rays.empty() ? 0.0 : double(rays.size()) / median(s) / 1e6;
     for (std::size_t i = 0; i < rays.size(); ++i) q.differing += blocked[i] != ref[i];
-    const std::vector<ray> few = sample(rays, rules.count_rays);
+    const std::vector<ray> few = counting_sample(rays, rules.count_rays, a.batch_alignment());
     std::vector<std::uint8_t> few_blocked(few.size());
     per_ray(q, a.occluded_counted(few, few_blocked));
     return q;

@@ -221,10 +221,13 @@ private:
                 else hits[i] = p->best[k];
                 if (per_ray) (*per_ray)[i] = used;
                 if constexpr (Policy::departures && requires { stats.left_at; }) {
-                    // Chapter 14: the share of the packet's node visits made before the ray left it.
+                    // Chapter 14: the share of the packet's node visits made before the ray left it, below 1
+                    // for every ray that left (also after the packet's last visit); 1: it never left.
                     const std::uint64_t at = stats.left_at[k % K], all = stats.node_visits - visits_before;
                     if (per_ray && at != stats.none_left)
-                        (*per_ray)[i] = all > 0 ? float(double(at - visits_before) / double(all)) : 0.0f;
+                        (*per_ray)[i] = all > 0 ? std::min(float(double(at - visits_before) / double(all)),
+                                                           std::nextafter(1.0f, 0.0f))
+                                                : 0.0f;
                     else if (per_ray) (*per_ray)[i] = 1.0f;
                 }
             }

@@ -24,6 +24,11 @@ struct timing_rules {
     std::size_t count_rays = 8192;  // the counting run uses every k-th ray, at most this many
 };
 
+// The counting run's sample: every k-th block of `block` consecutive rays (the last may be short), whole,
+// at most about `limit` rays (at least one block). block = the structure's batch_alignment(): a packet tracer
+// counts on whole tile rows, the packets the timed runs trace, not on packets of rays far apart.
+std::vector<ray> counting_sample(std::span<const ray> rays, std::size_t limit, std::size_t block);
+
 struct query_result {
     double mrays = 0.0;       // median, million rays per second
     int runs = 0;             // timed runs behind the median
