@@ -6,12 +6,16 @@
 #include "strahl/ch01/ray_sets.hpp"
 #include "strahl/ch05/sah.hpp"
 #include "strahl/ch12/accel.hpp"
+#include "strahl/ch12/packet.hpp"
 #include "strahl/procedural.hpp"
-#include "bvh_rays.hpp"
+#include "packet_cases.hpp"
 #include "exactness.hpp"
 #include "test_support.hpp"
 #include "strahl/ch05/accel.hpp"
 #include <catch2/catch.hpp>
+#include <memory>
+#include <cstring>
+#include "strahl/rng.hpp"
 
 using namespace strahl;
 using namespace strahl::ch12;
@@ -26,16 +30,6 @@ std::vector<packet_config> all_configs(int width) {
             {w::frustum, 16, 4, 4, width}};
 }
 
-ch04::bvh binary(const triangle_mesh& m) {
-    std::vector<aabb> boxes(m.triangle_count());
-    std::vector<vec3> centroids(boxes.size());
-    for (std::size_t i = 0; i < boxes.size(); ++i) {
-        const auto t = m.triangle(i);
-        boxes[i] = aabb().grow(t[0]).grow(t[1]).grow(t[2]), centroids[i] = boxes[i].centroid();
-    }
-    return ch05::build_sah_bvh_fast(boxes, centroids);
-}
-
 void check_exact(const scene& s, const std::vector<ray>& rays, int width) {
     for (const packet_config& c : all_configs(width)) {
         const auto a = make_accel("test", c);
@@ -43,13 +37,6 @@ void check_exact(const scene& s, const std::vector<ray>& rays, int width) {
         INFO(describe(c) << ", rows of " << width << ", " << rays.size() << " rays, " << s.mesh.triangle_count() << " triangles");
         CHECK(test::disagreements_with_brute_force(*a, s.mesh, rays) == 0);
     }
-}
-
-// An image's primary rays, and the diffuse and shadow rays from their hits.
-std::vector<ray> image_rays(const scene& s, int w, int h, ch01::ray_kind kind) {
-    const auto exact = ch05::make_accel(false, {}, ch05::walk_kind::fast);  // exact, as every course structure
-    exact->build(s);
-    return ch01::make_rays(kind, s, w, h, 7, *exact);
 }
 
 }  // namespace
@@ -61,51 +48,22 @@ TEST_CASE("ch12 packets: every walk equals brute force on tiles of the teapot's 
     // batch is no whole number of rows.
     for (const ch01::ray_kind kind : {ch01::ray_kind::primary, ch01::ray_kind::diffuse, ch01::ray_kind::shadow}) {
         INFO(ch01::to_string(kind) << " rays");
-        check_exact(s, image_rays(s, 36, 27, kind), 36);
+        check_exact(s, test::image_rays(s, 36, 27, kind), 36);
     }
 }
 
-TEST_CASE("ch12 packets: every walk equals brute force on rays made to break it, in consecutive packets",
-          "[ch12][adversarial]") {
-    const scene s = teapot_scene(3);
-    std::vector<ray> rays = test::nasty_rays(binary(s.mesh), 200, 31);
-    // Denormal and tiny direction components, an empty and a reversed interval, a negative tmin.
-    for (const float tiny : {1e-40f, -1e-42f, 1e-30f, 1e-20f})
-        rays.push_back({vec3(0.1f, 0.2f, -3.0f), vec3(tiny, 0.05f, 1.0f)});
-    rays.push_back({vec3(0.0f, 0.3f, -3.0f), vec3(0, 0, 1), 2.0f, 2.0f});
-    rays.push_back({vec3(0.0f, 0.3f, -3.0f), vec3(0, 0, 1), 3.0f, 1.0f});
-    rays.push_back({vec3(0.0f, 0.3f, 0.0f), vec3(0, 0, 1), -5.0f, inf});
-    check_exact(s, rays, 0);
-    check_exact(s, rays, 16);  // the same rays as rows of 16: tiles of unrelated rays, every octant mixed
-}
-
-TEST_CASE("ch12 packets: ties, one triangle, an empty scene, a flat soup", "[ch12][adversarial]") {
-    const auto rays_for = [](const triangle_mesh& m) { return test::nasty_rays(binary(m), 120, 5); };
-    const triangle_mesh ties = test::copies(300, vec3(0, 0, 0), vec3(1, 0, 0), vec3(0, 1, 0));
-    check_exact(test::mesh_only(ties), rays_for(ties), 0);
-    const triangle_mesh one = test::copies(1, vec3(0, 0, 0), vec3(1, 0, 0), vec3(0, 1, 0));
-    check_exact(test::mesh_only(one), rays_for(one), 8);
-    check_exact(test::mesh_only(triangle_mesh{}), rays_for(one), 0);
-    triangle_mesh flat = random_soup(500, 5, 0.1f);
-    for (vec3& p : flat.positions) p.z = 0.5f;
-    check_exact(test::mesh_only(flat), rays_for(flat), 0);
-}
-
-TEST_CASE("ch12 packets: equal brute force on a scene far from the origin, and from far origins", "[ch12][adversarial]") {
-    scene s = teapot_scene(3);
-    for (vec3& p : s.mesh.positions) p += vec3(3e4f, -1e5f, 2e4f);
-    std::vector<ray> rays = test::nasty_rays(binary(s.mesh), 150, 9);
-    const vec3 c = s.mesh.bounds().centroid();
-    for (int i = 0; i < 40; ++i) {  // origins 1e9 away (moved to the scene by ray_frame), aimed at the teapot
-        const vec3 o = c + vec3(1e9f, 3e8f * float(i % 5), -2e8f);
-        rays.push_back({o, c + vec3(0.01f * float(i), 0.0f, 0.0f) - o});
-    }
-    check_exact(s, rays, 0);
+TEST_CASE("ch12 packets: every walk equals brute force on rays made to break it, on ties, one triangle, an "
+          "empty scene, a flat soup, a far scene and far origins", "[ch12][adversarial]") {
+    for (const test::packet_case& c : test::packet_cases())
+        for (const int width : c.widths) {
+            INFO(c.what);
+            check_exact(c.s, c.rays, width);
+        }
 }
 
 TEST_CASE("ch12 packets: lane counts add up, and packets visit fewer nodes than their rays alone", "[ch12]") {
     const scene s = teapot_scene(4);
-    const std::vector<ray> rays = image_rays(s, 64, 48, ch01::ray_kind::primary);
+    const std::vector<ray> rays = test::image_rays(s, 64, 48, ch01::ray_kind::primary);
     const auto alone = ch05::make_accel(false, {}, ch05::walk_kind::fast);
     alone->build(s);
     std::vector<hit> alone_hits(rays.size());
@@ -134,6 +92,50 @@ TEST_CASE("ch12 packets: lane counts add up, and packets visit fewer nodes than 
         // visits are shared.
         CHECK(l.counts.nodes_visited < single.nodes_visited);
     }
+}
+
+TEST_CASE("ch12 packets: the lanes' terms computed K at a time equal lane_terms bit for bit, refusals included",
+          "[ch12]") {
+    pcg32 g(1207);
+    const tree_frame f(aabb{vec3(-3.0f, 1e-3f, -200.0f), vec3(50.0f, 2.0f, 7.0f)});
+    int refused_seen = 0;
+    for (int round = 0; round < 300; ++round) {
+        auto scalar = std::make_unique<ray_packet<16, 4>>(), lanes = std::make_unique<ray_packet<16, 4>>();
+        scalar->clear(), lanes->clear();
+        bool ok[64];
+        for (int i = 0; i < 64; ++i) {
+            ray r{vec3(g.next_float() * 100 - 50, g.next_float() * 4 - 2, g.next_float() * 1e4f - 5e3f),
+                  vec3(g.next_float() * 2 - 1, g.next_float() * 2 - 1, g.next_float() * 2 - 1)};
+            // Directions the fast test refuses: zero, denormal and tiny components, now and then.
+            const std::uint32_t odd = g.next_u32() % 16;
+            if (odd == 0) r.dir.y = 0.0f;
+            if (odd == 1) r.dir.x = -1e-40f;
+            if (odd == 2) r.dir.z = 1e-33f;
+            if (odd == 3) r.org.x = -0.0f, r.dir.y = -0.0f;
+            r.tmin = g.next_float(), r.tmax = g.next_float() < 0.5f ? inf : 1.0f + 100.0f * g.next_float();
+            const lane_terms l(r, f);
+            ok[i] = l.ok;
+            scalar->set(i, r, l, std::uint32_t(i));
+            lanes->set_ray(i, r, std::uint32_t(i));
+        }
+        unsigned refused[4];
+        lanes->set_terms(f, refused);
+        for (int i = 0; i < 64; ++i) {
+            INFO("round " << round << ", lane " << i);
+            CHECK(bool((refused[i / 16] >> (i % 16)) & 1u) == !ok[i]);
+            refused_seen += !ok[i];
+            if (!ok[i]) continue;  // (a refused lane's terms are never read)
+            for (int a = 0; a < 3; ++a) {
+                CHECK(std::memcmp(&lanes->inv[a][i], &scalar->inv[a][i], 4) == 0);
+                CHECK(std::memcmp(&lanes->org_near[a][i], &scalar->org_near[a][i], 4) == 0);
+                CHECK(std::memcmp(&lanes->org_far[a][i], &scalar->org_far[a][i], 4) == 0);
+            }
+            CHECK(std::memcmp(&lanes->slack[i], &scalar->slack[i], 4) == 0);
+            CHECK(std::memcmp(&lanes->t0[i], &scalar->t0[i], 4) == 0);
+            CHECK(std::memcmp(&lanes->t1[i], &scalar->t1[i], 4) == 0);
+        }
+    }
+    CHECK(refused_seen > 100);
 }
 
 TEST_CASE("ch12 packets: configurations not built are refused, naming what is", "[ch12]") {

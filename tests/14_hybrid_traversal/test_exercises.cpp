@@ -9,6 +9,7 @@
 #include "strahl/procedural.hpp"
 #include "strahl/rng.hpp"
 #include "exactness.hpp"
+#include "packet_cases.hpp"
 #include <catch2/catch.hpp>
 #include <cstring>
 #include <memory>
@@ -115,11 +116,6 @@ coherence expected(const ray_packet<K, 1>& p) {
     return c;
 }
 
-std::vector<ray> teapot_rays(const scene& s, ch01::ray_kind kind) {
-    const auto exact = ch05::make_accel(false, {}, ch05::walk_kind::fast);
-    exact->build(s);
-    return ch01::make_rays(kind, s, 40, 30, 3, *exact);
-}
 
 }  // namespace
 
@@ -135,7 +131,7 @@ TEST_CASE("14.1 one slab test: each lane equals chapter 05's fast slab test, ray
     for (const int t : {0, 16}) {
         const auto a = make_accel("hybrid", {16, 4, 4, 40, t});
         a->build(s);
-        CHECK(test::disagreements_with_brute_force(*a, s.mesh, teapot_rays(s, ch01::ray_kind::primary)) == 0);
+        CHECK(test::disagreements_with_brute_force(*a, s.mesh, test::image_rays(s, 40, 30, ch01::ray_kind::primary, 3)) == 0);
     }
 }
 
@@ -168,7 +164,7 @@ TEST_CASE("14.2 the threshold: the coherence of the active lanes, unit direction
     const auto a = make_accel("hybrid", {16, 4, 4, 40, automatic});
     a->build(s);
     for (const ch01::ray_kind kind : {ch01::ray_kind::primary, ch01::ray_kind::diffuse})
-        CHECK(test::disagreements_with_brute_force(*a, s.mesh, teapot_rays(s, kind)) == 0);
+        CHECK(test::disagreements_with_brute_force(*a, s.mesh, test::image_rays(s, 40, 30, kind, 3)) == 0);
 }
 
 TEST_CASE("14.3 the hand-off: out of the packet with the lane's ray, its answer back, the other lanes untouched",
@@ -223,7 +219,7 @@ TEST_CASE("14.3 the hand-off: out of the packet with the lane's ray, its answer 
     for (const int t : {2, 8, 15}) {
         const auto a = make_accel("hybrid", {16, 4, 4, 40, t});
         a->build(s);
-        CHECK(test::disagreements_with_brute_force(*a, s.mesh, teapot_rays(s, ch01::ray_kind::diffuse)) == 0);
-        CHECK(test::disagreements_with_brute_force(*a, s.mesh, teapot_rays(s, ch01::ray_kind::shadow)) == 0);
+        CHECK(test::disagreements_with_brute_force(*a, s.mesh, test::image_rays(s, 40, 30, ch01::ray_kind::diffuse, 3)) == 0);
+        CHECK(test::disagreements_with_brute_force(*a, s.mesh, test::image_rays(s, 40, 30, ch01::ray_kind::shadow, 3)) == 0);
     }
 }

@@ -9,7 +9,7 @@
 #include "strahl/ch13/accel.hpp"
 #include "strahl/ch14/accel.hpp"
 #include "strahl/procedural.hpp"
-#include "bvh_rays.hpp"
+#include "packet_cases.hpp"
 #include "exactness.hpp"
 #include "test_support.hpp"
 #include <catch2/catch.hpp>
@@ -31,16 +31,6 @@ std::vector<hybrid_config> all_configs(int width) {
     return out;
 }
 
-ch04::bvh binary(const triangle_mesh& m) {
-    std::vector<aabb> boxes(m.triangle_count());
-    std::vector<vec3> centroids(boxes.size());
-    for (std::size_t i = 0; i < boxes.size(); ++i) {
-        const auto t = m.triangle(i);
-        boxes[i] = aabb().grow(t[0]).grow(t[1]).grow(t[2]), centroids[i] = boxes[i].centroid();
-    }
-    return ch05::build_sah_bvh_fast(boxes, centroids);
-}
-
 void check_exact(const scene& s, const std::vector<ray>& rays, int width) {
     for (const hybrid_config& c : all_configs(width)) {
         const auto a = make_accel("test", c);
@@ -50,12 +40,6 @@ void check_exact(const scene& s, const std::vector<ray>& rays, int width) {
     }
 }
 
-std::vector<ray> image_rays(const scene& s, int w, int h, ch01::ray_kind kind) {
-    const auto exact = ch05::make_accel(false, {}, ch05::walk_kind::fast);
-    exact->build(s);
-    return ch01::make_rays(kind, s, w, h, 7, *exact);
-}
-
 }  // namespace
 
 TEST_CASE("ch14 hybrid: equals brute force at every threshold on tiles of the teapot's primary, diffuse and "
@@ -63,42 +47,22 @@ TEST_CASE("ch14 hybrid: equals brute force at every threshold on tiles of the te
     const scene s = teapot_scene(4);
     for (const ch01::ray_kind kind : {ch01::ray_kind::primary, ch01::ray_kind::diffuse, ch01::ray_kind::shadow}) {
         INFO(ch01::to_string(kind) << " rays");
-        check_exact(s, image_rays(s, 36, 27, kind), 36);
+        check_exact(s, test::image_rays(s, 36, 27, kind), 36);
     }
 }
 
 TEST_CASE("ch14 hybrid: equals brute force on rays made to break it, on ties, degenerate and far scenes",
           "[ch14][adversarial]") {
-    {
-        const scene s = teapot_scene(3);
-        std::vector<ray> rays = test::nasty_rays(binary(s.mesh), 200, 31);
-        for (const float tiny : {1e-40f, -1e-42f, 1e-30f, 1e-20f})
-            rays.push_back({vec3(0.1f, 0.2f, -3.0f), vec3(tiny, 0.05f, 1.0f)});
-        rays.push_back({vec3(0.0f, 0.3f, -3.0f), vec3(0, 0, 1), 2.0f, 2.0f});
-        rays.push_back({vec3(0.0f, 0.3f, 0.0f), vec3(0, 0, 1), -5.0f, inf});
-        check_exact(s, rays, 0);
-        check_exact(s, rays, 16);  // rows of 16: tiles of unrelated rays, every octant mixed
-    }
-    const auto rays_for = [](const triangle_mesh& m) { return test::nasty_rays(binary(m), 120, 5); };
-    const triangle_mesh ties = test::copies(300, vec3(0, 0, 0), vec3(1, 0, 0), vec3(0, 1, 0));
-    check_exact(test::mesh_only(ties), rays_for(ties), 0);
-    const triangle_mesh one = test::copies(1, vec3(0, 0, 0), vec3(1, 0, 0), vec3(0, 1, 0));
-    check_exact(test::mesh_only(one), rays_for(one), 8);
-    check_exact(test::mesh_only(triangle_mesh{}), rays_for(one), 0);
-    scene far = teapot_scene(3);
-    for (vec3& p : far.mesh.positions) p += vec3(3e4f, -1e5f, 2e4f);
-    std::vector<ray> rays = test::nasty_rays(binary(far.mesh), 150, 9);
-    const vec3 c = far.mesh.bounds().centroid();
-    for (int i = 0; i < 40; ++i) {  // origins 1e9 away, aimed at the teapot (ray_frame moves them)
-        const vec3 o = c + vec3(1e9f, 3e8f * float(i % 5), -2e8f);
-        rays.push_back({o, c + vec3(0.01f * float(i), 0.0f, 0.0f) - o});
-    }
-    check_exact(far, rays, 0);
+    for (const test::packet_case& c : test::packet_cases())
+        for (const int width : c.widths) {
+            INFO(c.what);
+            check_exact(c.s, c.rays, width);
+        }
 }
 
 TEST_CASE("ch14 hybrid: rays leave where the threshold says, and never leaving is chapter 12's wide walk", "[ch14]") {
     const scene s = teapot_scene(4);
-    const std::vector<ray> rays = image_rays(s, 64, 48, ch01::ray_kind::primary);
+    const std::vector<ray> rays = test::image_rays(s, 64, 48, ch01::ray_kind::primary);
     std::vector<hit> hits(rays.size());
     std::vector<float> left;
     const auto lanes_at = [&](int threshold) {

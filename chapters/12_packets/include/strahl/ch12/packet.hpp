@@ -88,14 +88,10 @@ struct alignas(64) ray_packet {
     }
     // Puts ray r (the batch's ray `index`) into lane `lane`, with its fast-slab terms.
     void set(int lane, const ray& r, const lane_terms& l, std::uint32_t index) {
-        for (int a = 0; a < 3; ++a) {
-            org[a][lane] = r.org[a], dir[a][lane] = r.dir[a];
+        set_ray(lane, r, index);
+        for (int a = 0; a < 3; ++a)
             inv[a][lane] = l.inv[a], org_near[a][lane] = l.org_near[a], org_far[a][lane] = l.org_far[a];
-        }
-        tmin[lane] = r.tmin, tmax[lane] = r.tmax, slack[lane] = l.slack;
-        t0[lane] = r.tmin - l.slack, t1[lane] = r.tmax + l.slack;
-        ray_index[lane] = index;
-        active[lane / K] |= 1u << (lane % K);
+        slack[lane] = l.slack, t0[lane] = r.tmin - l.slack, t1[lane] = r.tmax + l.slack;
     }
     // Puts ray r (the batch's ray `index`) into lane `lane` without its terms: set_terms() computes them for
     // every lane at once.
@@ -167,8 +163,6 @@ struct alignas(64) ray_packet {
             coherent = coherent && (kinds == 1u || kinds == 2u);
             octant |= int(kinds == 1u) << a;
         }
-        if (!coherent) octant = int(std::signbit(dir[0][0])) | int(std::signbit(dir[1][0])) << 1 |
-                                int(std::signbit(dir[2][0])) << 2;
         // The frustum: per axis the range of the origins and of 1 / d. The margin: a lane's computed near t
         // lies at most its widening (2^-19 of |plane| + |org|, lane_terms) and a few roundings (each 2^-24 of
         // the same) times |1 / d| below the exact (plane - org) / d; the frustum's own products in float

@@ -22,7 +22,6 @@
 
 namespace strahl::ch12 {
 
-
 // counting, plus the active lanes of every node visit (binary_walks.hpp's count_lanes).
 template <int K>
 struct lane_counting : counting {
@@ -219,16 +218,17 @@ private:
                 const std::uint32_t i = p->ray_index[k];
                 if constexpr (Any) blocked[i] = p->best[k].found() ? 1 : 0;
                 else hits[i] = p->best[k];
-                if (per_ray) (*per_ray)[i] = used;
-                if constexpr (Policy::departures && requires { stats.left_at; }) {
+                if (!per_ray) continue;
+                if constexpr (!Policy::departures || !requires { stats.left_at; }) {
+                    (*per_ray)[i] = used;
+                } else {
                     // Chapter 14: the share of the packet's node visits made before the ray left it, below 1
                     // for every ray that left (also after the packet's last visit); 1: it never left.
                     const std::uint64_t at = stats.left_at[k % K], all = stats.node_visits - visits_before;
-                    if (per_ray && at != stats.none_left)
-                        (*per_ray)[i] = all > 0 ? std::min(float(double(at - visits_before) / double(all)),
-                                                           std::nextafter(1.0f, 0.0f))
-                                                : 0.0f;
-                    else if (per_ray) (*per_ray)[i] = 1.0f;
+                    (*per_ray)[i] = at == stats.none_left ? 1.0f
+                                    : all > 0 ? std::min(float(double(at - visits_before) / double(all)),
+                                                         std::nextafter(1.0f, 0.0f))
+                                              : 0.0f;
                 }
             }
         });
