@@ -8,6 +8,7 @@
 #include "strahl/ch12/accel.hpp"
 #include "strahl/ch12/packet.hpp"
 #include "strahl/procedural.hpp"
+#include "strahl/tree_query.hpp"
 #include "packet_cases.hpp"
 #include "exactness.hpp"
 #include "test_support.hpp"
@@ -113,8 +114,15 @@ TEST_CASE("ch12 packets: the lanes' terms computed K at a time equal lane_terms 
             if (odd == 2) r.dir.z = 1e-33f;
             if (odd == 3) r.org.x = -0.0f, r.dir.y = -0.0f;
             r.tmin = g.next_float(), r.tmax = g.next_float() < 0.5f ? inf : 1.0f + 100.0f * g.next_float();
+            // Rays no packet takes: an empty interval, a non-finite or absurdly far origin, a vanishing or
+            // non-finite direction (placeable's edges: |d|^2 of 1e-30, |o|^2 of 1e36).
+            if (odd == 4) r.tmax = r.tmin;
+            if (odd == 5) r.org.z = g.next_float() < 0.5f ? std::numeric_limits<float>::quiet_NaN() : -inf;
+            if (odd == 6) r.org = vec3(1e18f, 0.0f, 0.0f) * (g.next_float() < 0.5f ? 0.999f : 1.0001f);
+            if (odd == 7) r.dir = glm::normalize(r.dir) * (1e-15f * (g.next_float() < 0.5f ? 0.999f : 1.0001f));
+            if (odd == 8) r.dir.x = g.next_float() < 0.5f ? inf : 3e19f;
             const lane_terms l(r, f);
-            ok[i] = l.ok;
+            ok[i] = l.ok && r.tmin < r.tmax && placeable(r);
             scalar->set(i, r, l, std::uint32_t(i));
             lanes->set_ray(i, r, std::uint32_t(i));
         }

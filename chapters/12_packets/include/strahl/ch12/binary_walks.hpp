@@ -51,7 +51,7 @@ void masked_walk(const ch04::bvh& tree, ray_packet<K, V>& p, Stats& stats, Leaf&
             count_lanes(stats, std::popcount(lanes), K);
             if (n.is_leaf()) {
                 leaf(r, lanes, at, n.offset, std::uint32_t(n.count));
-                r = load(p, 0);  // tmax shrunk by the hits
+                reload_reach(r, p, 0);  // tmax shrunk by the hits
             } else {
                 const std::uint32_t left = index + 1, right = n.offset;
                 stats.box_test(2 * std::popcount(lanes));

@@ -101,14 +101,36 @@ struct alignas(64) ray_packet {
         ray_index[lane] = index;
         active[lane / K] |= 1u << (lane % K);
     }
+    // Lanes 0..count-1 from rays[ids[0..count-1]], no best hit yet, the rest empty (set_ray for each, the
+    // lane bits set once).
+    void set_rays(const ray* rays, const std::uint32_t* ids, int count) {
+        for (int lane = 0; lane < count; ++lane) {
+            const ray& r = rays[ids[lane]];
+            for (int a = 0; a < 3; ++a) org[a][lane] = r.org[a], dir[a][lane] = r.dir[a];
+            tmin[lane] = r.tmin, tmax[lane] = r.tmax;
+            ray_index[lane] = ids[lane];
+            best[lane] = hit{};
+        }
+        for (int v = 0; v < V; ++v) {
+            const int n = std::clamp(count - v * K, 0, K);
+            active[v] = n == 32 ? ~0u : (1u << n) - 1u;
+        }
+    }
     // lane_terms for every lane, K at a time: the same operations in the same order, so the same bits (|x|
     // as max(x, -x): a zero's sign is lost in the sums it enters). refused[v]: the active lanes of vector v
-    // whose ray the fast test cannot take (lane_terms::ok false), for the caller to trace alone and clear.
+    // whose ray no packet takes, for the caller to trace alone and clear: an empty interval (not tmin <
+    // tmax), a ray tree_query.hpp's placeable() refuses (the same sums in the same order), or a direction
+    // the fast test cannot take (lane_terms::ok false).
     void set_terms(const tree_frame& f, unsigned* refused) {
         const auto abs = [](vf x) { return simd::max(x, -x); };
+        const vf largest(std::numeric_limits<float>::max());
         for (int v = 0; v < V; ++v) {
             const int at = v * K;
-            simd::vmask<K> ok(true);
+            const vf ox = get(org[0], v), oy = get(org[1], v), oz = get(org[2], v);
+            const vf dx = get(dir[0], v), dy = get(dir[1], v), dz = get(dir[2], v);
+            const vf d2 = dx * dx + dy * dy + dz * dz, o2 = ox * ox + oy * oy + oz * oz;
+            simd::vmask<K> ok = (get(tmin, v) < get(tmax, v)) & (abs(ox) <= largest) & (abs(oy) <= largest) &
+                                (abs(oz) <= largest) & (abs(d2) <= largest) & (d2 > vf(1e-30f)) & (o2 < vf(1e36f));
             vf reach = abs(get(org[0], v) - vf(f.centre[0]));
             reach = reach + abs(get(org[1], v) - vf(f.centre[1]));
             reach = reach + abs(get(org[2], v) - vf(f.centre[2]));
@@ -150,6 +172,7 @@ struct alignas(64) ray_packet {
             ray_index[i] = invalid_id;
         }
         // The octant: each axis's sign bits over the lanes, all set or all clear (one test per vector).
+        // Only a coherent packet has a frustum (the walks test it only then).
         const unsigned all = simd::detail::lane_bits(K);
         coherent = true;
         octant = 0;
@@ -168,6 +191,10 @@ struct alignas(64) ray_packet {
         // the same) times |1 / d| below the exact (plane - org) / d; the frustum's own products in float
         // round by as much again. 2^-18 of the axis's span (the tree's largest |coordinate| plus the largest
         // |origin|) times the largest |1 / d| covers both, and 2^-125 the lanes' 2^-126 in t.
+        if (!coherent) {
+            t0_lo = -inf, t1_hi = inf;
+            return;
+        }
         for (int a = 0; a < 3; ++a) {
             vf olo = get(org[a], 0), ohi = olo, ilo = get(inv[a], 0), ihi = ilo;
             for (int v = 1; v < V; ++v) {
@@ -217,6 +244,14 @@ template <int K, int V>
     }
     r.tmin = P::get(p.tmin, v), r.tmax = P::get(p.tmax, v), r.t0 = P::get(p.t0, v), r.t1 = P::get(p.t1, v);
     return r;
+}
+
+// After hits (or rays traced alone) shrank some lanes' reach: tmax and t1 of vector v again, the rest of r
+// unchanged (cheaper than load, and no copy of the whole set).
+template <int K, int V>
+[[gnu::always_inline]] inline void reload_reach(lane_rays<K>& r, const ray_packet<K, V>& p, int v) {
+    using P = ray_packet<K, V>;
+    r.tmax = P::get(p.tmax, v), r.t1 = P::get(p.t1, v);
 }
 
 // Lanes 0..n-1 from the packet's rays ids[0..n-1]; lanes n..K-1 repeat ids[0] (their answers are ignored).
@@ -289,6 +324,13 @@ template <int K>
     return simd::movemask(hit);
 }
 
+// std::nextafter(x, inf) for x neither NaN nor +inf, without the library call: the next float up.
+[[gnu::always_inline]] inline float next_up(float x) {
+    if (x == 0.0f) return std::numeric_limits<float>::denorm_min();
+    const std::uint32_t b = std::bit_cast<std::uint32_t>(x);
+    return std::bit_cast<float>(b >> 31 ? b - 1 : b + 1);
+}
+
 // The closest-hit step of chapter 01 (record_closest) on the lanes in `bits`: the nearer t wins, the lower
 // id at equal t; the winner's tmax becomes the next float above t (and t1 with it).
 // Lane j is the packet's ray at(j): v * K + j for a loaded vector, ids[j] for a gathered one.
@@ -301,7 +343,7 @@ template <int K, int V, class At>
         const int j = std::countr_zero(bits), i = at(j);
         if (!closer(ts[j], id, p.best[i])) continue;
         p.best[i] = hit{ts[j], id, us[j], ws[j], invalid_id};
-        p.tmax[i] = std::nextafter(ts[j], inf);
+        p.tmax[i] = next_up(ts[j]);
         p.t1[i] = p.tmax[i] + p.slack[i];
     }
 }

@@ -167,28 +167,20 @@ private:
 
     template <bool Any, class Stats>
     void trace(std::span<const ray> rays, hit* hits, std::uint8_t* blocked, Stats& stats, std::vector<float>* per_ray) const {
+        const auto alone = [&](std::uint32_t i) {
+            if constexpr (Any) blocked[i] = single_any(rays[i], stats) ? 1 : 0;
+            else hits[i] = single_closest(rays[i], stats);
+        };
+        if (!binary_.loose.empty()) {
+            // Every ray of a scene with loose primitives (rare: non-finite triangles) goes alone.
+            for (std::uint32_t i = 0; i < rays.size(); ++i) alone(i);
+            return;
+        }
         auto p = std::make_unique<ray_packet<K, V>>();
         for_each_packet(rays.size(), config_, [&](const std::uint32_t* ids, int count) {
-            p->clear();
-            const auto alone = [&](std::uint32_t i) {
-                if constexpr (Any) blocked[i] = single_any(rays[i], stats) ? 1 : 0;
-                else hits[i] = single_closest(rays[i], stats);
-            };
-            int filled = 0;
-            for (int lane = 0; lane < count; ++lane) {
-                const std::uint32_t i = ids[lane];
-                const ray& q = rays[i];
-                if (!(q.tmin < q.tmax) || !placeable(q) || !binary_.loose.empty()) {
-                    // Alone: empty intervals, rays no tree can place; and every ray of a scene with loose
-                    // primitives (rare: non-finite triangles).
-                    alone(i);
-                    continue;
-                }
-                p->set_ray(filled, q, i);
-                p->best[filled++] = hit{};
-            }
-            if (filled == 0) return;
-            // The lanes' slab terms, K at a time; directions the fast test refuses go alone too.
+            p->set_rays(rays.data(), ids, count);
+            // The lanes' slab terms, K at a time. Alone: empty intervals, rays no tree can place, and
+            // directions the fast test refuses.
             unsigned refused[V];
             p->set_terms(box_, refused);
             for (int v = 0; v < V; ++v)

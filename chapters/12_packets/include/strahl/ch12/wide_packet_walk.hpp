@@ -19,7 +19,8 @@ namespace strahl::ch12 {
 // What chapter 14 changes in this walk. box: K rays against one box (chapter 12: exercise 12.1's
 // packet_box). leave(lanes, ref): called before the packet enters node or leaf `ref` with `lanes` (on the way
 // down and after a pop); true when it has traced those lanes' rays through `ref` by other means (chapter 14:
-// each alone), so that the packet skips `ref` (chapter 12: never).
+// each alone), so that the packet skips `ref` (chapter 12: never); it may change those lanes' tmax, t1, best
+// hit and active bit, nothing else of the packet.
 template <bool Coherent>
 struct packet_hooks {
     template <int K>
@@ -51,7 +52,7 @@ void wide_packet_walk(const ch13::wide_bvh<N, M>& tree, ray_packet<K, 1>& p, Sta
         if (hooks.leave(lanes, ref)) {
             // The lanes' rays went on alone through `ref`: the packet skips it, with their new reach.
             if (p.active[0] == 0) return;  // any hit: every ray answered
-            r = load(p, 0);
+            reload_reach(r, p, 0);
         } else if (!ch13::is_leaf(ref)) {
             const ch13::wide_node<N>& n = tree.nodes[ref];
             stats.node_visit();
@@ -62,9 +63,11 @@ void wide_packet_walk(const ch13::wide_bvh<N, M>& tree, ray_packet<K, 1>& p, Sta
             // A coherent packet first tests its frustum against all N boxes at once (frustum_walk.hpp): the
             // rays themselves are tested only against the boxes the frustum may enter.
             unsigned candidates = (1u << N) - 1;
+            alignas(64) float bounds[N];
             if constexpr (Coherent) {
                 simd::vfloat<N> bound;
                 candidates = frustum_children(p, n, bound);
+                bound.store(bounds);
             }
             for (unsigned rest = candidates; rest != 0; rest &= rest - 1) {
                 const int c = std::countr_zero(rest);
@@ -79,7 +82,8 @@ void wide_packet_walk(const ch13::wide_bvh<N, M>& tree, ray_packet<K, 1>& p, Sta
                 // The nearest entry, over every lane that enters (lanes outside `lanes` too: a smaller value
                 // only orders and prunes more cautiously), in a few SIMD steps.
                 float nearest = inf;
-                if constexpr (Nearest) nearest = simd::reduce_min(simd::select(enters, t, simd::vfloat<K>(inf)));
+                if constexpr (Nearest && Coherent) nearest = bounds[c];
+                else if constexpr (Nearest) nearest = simd::reduce_min(simd::select(enters, t, simd::vfloat<K>(inf)));
                 // Insertion by distance, farthest first (stored order: appended).
                 int j = count++;
                 if constexpr (Nearest)
@@ -99,7 +103,7 @@ void wide_packet_walk(const ch13::wide_bvh<N, M>& tree, ray_packet<K, 1>& p, Sta
         } else {
             leaf(r, lanes, at, ref);
             if (p.active[0] == 0) return;  // any hit: every ray answered
-            r = load(p, 0);  // tmax shrunk by the hits
+            reload_reach(r, p, 0);  // tmax shrunk by the hits
         }
         // Pop the next child whose lanes are still in play and whose nearest entry still lies within reach.
         for (;;) {
