@@ -6,10 +6,26 @@
 #include "strahl/ch01/ray_sets.hpp"
 #include "strahl/ch05/accel.hpp"
 #include "strahl/ch05/sah.hpp"
+#include "strahl/ch05/slab_test.hpp"
+#include "strahl/ch12/packet.hpp"
 #include "strahl/procedural.hpp"
 #include <vector>
 
 namespace strahl::test {
+
+// What chapter 05's fast_slab::entry computes for lane i of p: its entry distance, or +inf for a miss.
+template <int K, int V>
+inline float scalar_entry(const ch12::ray_packet<K, V>& p, int i, const aabb& b) {
+    float t0 = p.t0[i], t1 = p.t1[i];
+    for (int a = 0; a < 3; ++a) {
+        const bool down = std::signbit(p.dir[a][i]);
+        const float near = ch05::plane_t<ch05::fused_plane_default>(down ? b.max[a] : b.min[a], p.inv[a][i], p.org_near[a][i]);
+        const float far = ch05::plane_t<ch05::fused_plane_default>(down ? b.min[a] : b.max[a], p.inv[a][i], p.org_far[a][i]);
+        t0 = near > t0 ? near : t0;
+        t1 = far < t1 ? far : t1;
+    }
+    return t0 <= t1 ? t0 : inf;
+}
 
 // Chapter 05's fast binned SAH tree over a mesh (for nasty_rays' boxes).
 inline ch04::bvh binned_tree(const triangle_mesh& m) {

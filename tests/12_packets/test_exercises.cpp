@@ -8,6 +8,7 @@
 #include "strahl/procedural.hpp"
 #include "strahl/rng.hpp"
 #include "exactness.hpp"
+#include "packet_cases.hpp"
 #include "nasty_rays.hpp"
 #include <catch2/catch.hpp>
 #include <algorithm>
@@ -16,6 +17,7 @@
 
 using namespace strahl;
 using namespace strahl::ch12;
+using strahl::test::scalar_entry;
 
 namespace {
 
@@ -46,19 +48,6 @@ aabb random_box(pcg32& g) {
     return {c - h, c + h};
 }
 
-// What chapter 05's fast_slab::entry computes for lane i of p: its entry distance, or +inf for a miss.
-template <int K, int V>
-float scalar_entry(const ray_packet<K, V>& p, int i, const aabb& b) {
-    float t0 = p.t0[i], t1 = p.t1[i];
-    for (int a = 0; a < 3; ++a) {
-        const bool down = std::signbit(p.dir[a][i]);
-        const float near = ch05::plane_t<ch05::fused_plane_default>(down ? b.max[a] : b.min[a], p.inv[a][i], p.org_near[a][i]);
-        const float far = ch05::plane_t<ch05::fused_plane_default>(down ? b.min[a] : b.max[a], p.inv[a][i], p.org_far[a][i]);
-        t0 = near > t0 ? near : t0;
-        t1 = far < t1 ? far : t1;
-    }
-    return t0 <= t1 ? t0 : inf;
-}
 
 template <int K, bool Coherent>
 int check_box_lanes(pcg32& g, const tree_frame& f) {

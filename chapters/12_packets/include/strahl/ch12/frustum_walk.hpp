@@ -40,6 +40,35 @@ template <int N, int K, int V>
     return simd::movemask(lo <= hi);
 }
 
+// The same bounds the other way round: the children that every ray of the packet surely enters. A lane's
+// computed entry on axis a is at most the largest of the four products plus the margin, its exit at least
+// the smallest less it; so where the largest entry bound (and t0_hi, the lanes' largest t0) lies at or below
+// the smallest exit bound (and t1_lo, their smallest t1), each lane's own test would say it enters. Returns
+// the candidates as frustum_children does; `covered` receives those surely entered by every lane.
+template <int N, int K, int V>
+[[gnu::always_inline]] inline unsigned frustum_children(const ray_packet<K, V>& p, const ch13::wide_node<N>& n,
+                                                        simd::vfloat<N>& entry, float t0_hi, float t1_lo,
+                                                        unsigned& covered) {
+    using vf = simd::vfloat<N>;
+    vf lo(p.t0_lo), hi(p.t1_hi), all_lo(t0_hi), all_hi(t1_lo);
+    for (int a = 0; a < 3; ++a) {
+        const bool down = (p.octant >> a) & 1;
+        const vf near = vf::load(down ? n.hi[a] : n.lo[a]), far = vf::load(down ? n.lo[a] : n.hi[a]);
+        const vf ilo(p.inv_lo[a]), ihi(p.inv_hi[a]), olo(p.org_lo[a]), ohi(p.org_hi[a]), m(p.margin[a]);
+        const vf n1 = near - ohi, n2 = near - olo, f1 = far - ohi, f2 = far - olo;
+        const vf a1 = n1 * ilo, a2 = n1 * ihi, a3 = n2 * ilo, a4 = n2 * ihi;
+        const vf b1 = f1 * ilo, b2 = f1 * ihi, b3 = f2 * ilo, b4 = f2 * ihi;
+        lo = simd::max(lo, simd::min(simd::min(a1, a2), simd::min(a3, a4)) - m);
+        hi = simd::min(hi, simd::max(simd::max(b1, b2), simd::max(b3, b4)) + m);
+        all_lo = simd::max(all_lo, simd::max(simd::max(a1, a2), simd::max(a3, a4)) + m);
+        all_hi = simd::min(all_hi, simd::min(simd::min(b1, b2), simd::min(b3, b4)) - m);
+    }
+    entry = lo;
+    const unsigned candidates = simd::movemask(lo <= hi);
+    covered = simd::movemask(all_lo <= all_hi) & candidates;
+    return candidates;
+}
+
 // leaf(rays, lanes, at, ref, bmin, bmax) for each vector of the packet with lanes in play, the leaf's box
 // given so that the leaf can test the vector against it first (and count the lanes that enter: the
 // utilisation of this walk is measured at its leaves, where the rays are tested). Nearest: closest hit (nearest child first,

@@ -62,16 +62,25 @@ void wide_packet_walk(const ch13::wide_bvh<N, M>& tree, ray_packet<K, 1>& p, Sta
             int count = 0;
             // A coherent packet first tests its frustum against all N boxes at once (frustum_walk.hpp): the
             // rays themselves are tested only against the boxes the frustum may enter.
-            unsigned candidates = (1u << N) - 1;
+            // Children that every lane surely enters keep the packet's lanes untested.
+            unsigned candidates = (1u << N) - 1, covered = 0;
             alignas(64) float bounds[N];
             if constexpr (Coherent) {
                 simd::vfloat<N> bound;
-                candidates = frustum_children(p, n, bound);
+                // (Over every lane: lanes out of play only make the bounds more cautious.)
+                candidates = frustum_children(p, n, bound, simd::reduce_max(r.t0), simd::reduce_min(r.t1), covered);
                 bound.store(bounds);
             }
             for (unsigned rest = candidates; rest != 0; rest &= rest - 1) {
                 const int c = std::countr_zero(rest);
                 if (!n.used(c)) continue;
+                if ((covered >> c) & 1u) {
+                    int j = count++;
+                    if constexpr (Nearest)
+                        for (; j > 0 && hits[j - 1].t <= bounds[c]; --j) hits[j] = hits[j - 1];
+                    hits[j] = {n.child[c], lanes, bounds[c]};
+                    continue;
+                }
                 stats.box_test(std::popcount(lanes));
                 const float bmin[3] = {n.lo[0][c], n.lo[1][c], n.lo[2][c]};
                 const float bmax[3] = {n.hi[0][c], n.hi[1][c], n.hi[2][c]};
