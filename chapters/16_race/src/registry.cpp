@@ -67,8 +67,8 @@ accel_entry packets(ch12::walk_kind walk, int lanes, int tile_w, int tile_h, int
     const ch12::packet_config c{walk, lanes, tile_w, tile_h, image_width};
     const std::string name = std::string("ch12-") + ch12::to_string(walk) + std::to_string(lanes) + "-" +
                              std::to_string(tile_w) + "x" + std::to_string(tile_h);
-    const std::string tree = walk == ch12::walk_kind::wide ? "chapter 13's 8-wide tree (optimal collapse)"
-                                                           : "chapter 05's binned SAH tree";
+    const bool wide = walk == ch12::walk_kind::wide || walk == ch12::walk_kind::frustum;
+    const std::string tree = wide ? "chapter 13's 8-wide tree (optimal collapse)" : "chapter 05's binned SAH tree";
     return {name, "12", "packets: " + ch12::describe(c) + ", " + tree,
             [name, c] { return std::unique_ptr<accel>(ch12::make_accel(name, c)); }};
 }
