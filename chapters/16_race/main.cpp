@@ -70,11 +70,15 @@ image primary_image(const scene& s, std::span<const ray> rays, const std::vector
 // With `more`, the processes already in DIR/processes/1, 2, ... (each with its race.csv) count too, and the
 // new ones follow them.
 int race_processes(int n, bool more, bool reverse, int argc, const char* const* argv,
-                   const std::filesystem::path& out, const std::filesystem::path& cache_dir) {
-    // Each child gets this command line without --more and --reverse, and its own --out.
+                   const std::filesystem::path& out, const std::filesystem::path& cache_dir,
+                   const std::vector<std::pair<std::string, std::string>>& compare) {
+    // Each child gets this command line without --more, --reverse and --compare, and its own --out.
     std::vector<std::string> base;
-    for (int i = 1; i < argc; ++i)
-        if (std::string(argv[i]) != "--reverse" && std::string(argv[i]) != "--more") base.push_back(argv[i]);
+    for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        if (a == "--compare") ++i;
+        else if (a != "--reverse" && a != "--more") base.push_back(a);
+    }
     const auto folder_of = [&](int k) { return out / "processes" / std::to_string(k); };
     std::vector<std::vector<race_row>> results;
     int earlier = 0;
@@ -119,6 +123,16 @@ int race_processes(int n, bool more, bool reverse, int argc, const char* const* 
     std::ofstream(out / "spread.md") << spread_markdown(combined, n, machine);
     write_svg(out / "spread.svg", to_svg(spread_plot(results), 2, 700, 400));
     write_plots(out, rows);
+    if (!compare.empty()) {
+        std::vector<comparison> all;
+        for (const auto& [a, b] : compare) {
+            const std::vector<comparison> c = compare_rows(results, a, b);
+            all.insert(all.end(), c.begin(), c.end());
+        }
+        std::ofstream(out / "compare.csv") << comparisons_csv(all);
+        std::ofstream(out / "compare.md") << comparisons_markdown(all, machine);
+        std::cout << '\n' << comparisons_markdown(all, machine);
+    }
     // The scene images: the first process's (every process draws the same).
     for (const auto& f : std::filesystem::directory_iterator(folder_of(1)))
         if (f.path().extension() == ".png")
@@ -162,6 +176,9 @@ int run(int argc, const char* const* argv) {
         .flag("more", "add the --processes N (default 1; 0: none, only combine) to those already in "
                       "DIR/processes/ and combine them all")
         .flag("reverse", "measure the structures in reverse order")
+        .option("compare", "A:B,...", "", "with --processes N (at least 5) or --more: for each pair of rows, A's speed over "
+                                          "B's within each process and the verdict (faster: A ahead in every process; "
+                                          "slower: behind in every one; else level); writes DIR/compare.csv and compare.md")
         .flag("quick", "built-in scenes only, 96x72 rays, 3 repeats: what ./course run runs");
     if (!args.parse(argc, argv)) return 0;
     const bool quick = args.has("quick");
@@ -184,13 +201,37 @@ int run(int argc, const char* const* argv) {
     // closest and any-hit answers and a structure's, the cache's read buffer and the image: under 200 bytes.
     check_memory(std::uint64_t(w) * std::uint64_t(h) * 200,
                  "the race's " + std::to_string(w) + " x " + std::to_string(h) + " ray sets");
+    std::vector<std::pair<std::string, std::string>> compare;
+    if (args.has("compare")) {
+        for (const std::string& pair : split(args.get("compare"))) {
+            const std::size_t colon = pair.find(':');
+            if (colon == std::string::npos || colon == 0 || colon + 1 == pair.size() ||
+                pair.find(':', colon + 1) != std::string::npos)
+                throw usage_error("--compare takes pairs of rows A:B, comma-separated (not '" + pair + "')");
+            compare.emplace_back(pair.substr(0, colon), pair.substr(colon + 1));
+            // Rows the race will have: among --accels, or registered (strahl-trace --list).
+            const std::vector<std::string> listed = args.has("accels") ? split(args.get("accels")) : std::vector<std::string>{};
+            for (const std::string& name : {compare.back().first, compare.back().second}) {
+                bool known = args.has("accels") ? std::find(listed.begin(), listed.end(), name) != listed.end() : true;
+                if (!args.has("accels")) try {
+                        find_accel(name, registry_options{threads, w});
+                    } catch (const std::exception&) {
+                        known = false;
+                    }
+                if (!known) throw usage_error("--compare: '" + name + "' is not a row of this race (--accels, or strahl-trace --list)");
+            }
+        }
+        if (processes < 2 && !args.has("more"))
+            throw usage_error("--compare needs several processes: --processes N (at least " +
+                              std::to_string(min_processes) + " for a verdict) or --more");
+    }
     // Only now, with the whole command line found good, anything is created.
     const std::filesystem::path out = args.get("out");
     prepare_output(out / "race.csv", false, false);
     const std::filesystem::path cache_dir = args.has("cache") ? std::filesystem::path(args.get("cache")) : out / "reference_cache";
     const auto started = std::filesystem::file_time_type::clock::now();
     if (processes > 1 || args.has("more"))
-        return race_processes(processes, args.has("more"), args.has("reverse"), argc, argv, out, cache_dir);
+        return race_processes(processes, args.has("more"), args.has("reverse"), argc, argv, out, cache_dir, compare);
 
     std::vector<ray_kind> kinds;
     for (const std::string& k : split(args.get("rays"))) kinds.push_back(parse_ray_kind(k));

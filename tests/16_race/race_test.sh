@@ -79,6 +79,17 @@ runs "--processes 2 again" 0 "$race" "${tiny[@]}" --out "$many" --processes 2 --
 rm "$many/spread.svg"
 runs "--processes 0 --more" 0 "$race" "${tiny[@]}" --out "$many" --processes 0 --more
 [[ -s $many/spread.svg && ! -e $many/processes/3 ]] || fail "--processes 0 --more: should redraw, run nothing"
+# The claim rule: pairs of rows compared within each process (two processes: too few for a verdict).
+runs "--processes 0 --more --compare" 0 "$race" "${tiny[@]}" --out "$many" --processes 0 --more \
+    --compare ch05-binned16-fast:ch04-median
+contains "$many/compare.csv" "teapot,primary,closest,ch05-binned16-fast,ch04-median,2," "--compare: compare.csv"
+contains "$many/compare.md" "too few processes" "--compare: compare.md"
+runs "--compare, no pair" 2 "$race" "${tiny[@]}" --out "$many" --more --compare ch04-median
+contains "$dir/err" "pairs of rows A:B" "--compare, no pair"
+runs "--compare, not in the race" 2 "$race" "${tiny[@]}" --out "$many" --more --compare ch04-median:ch13-bvh8-block8
+contains "$dir/err" "'ch13-bvh8-block8' is not a row of this race" "--compare, not in the race"
+runs "--compare, one process" 2 "$race" "${tiny[@]}" --out "$many" --compare ch04-median:ch05-binned16-fast
+contains "$dir/err" "--compare needs several processes" "--compare, one process"
 # Processes of another race (other rays) do not combine.
 runs "--more, other rays" 1 "$race" "${tiny[@]}" --out "$many" --more --width 20 --cache "$out/reference_cache"
 contains "$dir/err" "did not run the same race" "--more, other rays"

@@ -135,3 +135,46 @@ TEST_CASE("ch16 processes: figures combine as medians across processes", "[ch16]
     CHECK_THAT(md, Catch::Contains("62.00 (60.00 to 85.00)"));
     CHECK_THAT(md, Catch::Contains("| 50.00 |"));  // one sample: no brackets
 }
+
+TEST_CASE("ch16 processes: the claim rule compares two rows within each process", "[ch16][processes]") {
+    // The verdict: faster only where A beat B in every process, slower only where B beat A in every one.
+    CHECK(verdict_of({1.01, 1.2, 1.05, 1.3, 1.02}) == "faster");
+    CHECK(verdict_of({0.99, 0.8, 0.95, 0.7, 0.98}) == "slower");
+    CHECK(verdict_of({1.2, 1.3, 0.99, 1.25, 1.4}) == "level");  // one process against: the noise covers the gap
+    CHECK(verdict_of({1.0, 1.3, 1.1, 1.25, 1.4}) == "level");   // a tie is not a win
+    CHECK(verdict_of({1.2, 1.3, 1.1, 1.25}) == "too few processes");
+
+    // Five processes; the third is slow as a whole, the fifth faster: the paired ratios ignore both. A is
+    // ahead of B on closest hit in every process; on any hit the fourth process has B ahead.
+    std::vector<std::vector<race_row>> p;
+    const double scale[5] = {1.0, 1.0, 0.6, 1.0, 1.4};
+    const double any_a[5] = {2.2, 2.1, 2.3, 1.9, 2.2};
+    for (int k = 0; k < 5; ++k) {
+        p.push_back({row("A", "primary", 1.0, 1.1 * scale[k], any_a[k] * scale[k]),
+                     row("B", "primary", 1.0, 1.0 * scale[k], 2.0 * scale[k])});
+        if (k % 2) std::swap(p.back()[0], p.back()[1]);  // the reversed order of every second process
+    }
+    const std::vector<comparison> c = compare_rows(p, "A", "B");
+    REQUIRE(c.size() == 2);
+    CHECK(c[0].query == "closest");
+    CHECK(c[0].ratios.size() == 5);
+    CHECK(c[0].ratio.median == Approx(1.1));
+    CHECK(c[0].ratio.min == Approx(1.1));
+    CHECK(c[0].verdict == "faster");
+    CHECK(c[1].query == "any");
+    CHECK(c[1].ratio.median == Approx(1.1));
+    CHECK(c[1].ratio.min == Approx(0.95));
+    CHECK(c[1].verdict == "level");
+    const std::vector<comparison> back = compare_rows(p, "B", "A");
+    CHECK(back[0].verdict == "slower");
+    CHECK(back[0].ratio.median == Approx(1.0 / 1.1));
+
+    // The CSV: a line per comparison, each process's ratio at its end.
+    const std::string csv = comparisons_csv(c);
+    CHECK(csv.rfind("scene,rays,query,a,b,processes,ratio_median,ratio_min,ratio_max,verdict,ratios\n", 0) == 0);
+    CHECK(csv.find("teapot,primary,closest,A,B,5,1.1,1.1,1.1,faster,1.1 1.1 1.1 1.1 1.1\n") != std::string::npos);
+    CHECK(comparisons_markdown(c, "test machine").find("| teapot | primary | any | A | B | 5 |") != std::string::npos);
+
+    // A row no process measured is named.
+    CHECK_THROWS_WITH(compare_rows(p, "A", "C"), Catch::Contains("'C'"));
+}

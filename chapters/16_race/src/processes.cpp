@@ -42,6 +42,12 @@ query_result read_query(const std::filesystem::path& file, const csv_row& row, s
     return q;
 }
 
+std::string num(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.4g", v);
+    return buf;
+}
+
 std::string key_of(const race_row& r) { return r.scene + "\n" + r.ray_set + "\n" + r.accel; }
 
 spread spread_of(std::vector<double> v) {
@@ -153,6 +159,71 @@ std::string spread_markdown(const std::vector<combined_row>& rows, int processes
             << " | " << cell(c.build_ms, "%.2f") << " | " << cell(c.closest, "%.3f") << " | "
             << cell(c.closest_vs_embree, "%.3g") << " | " << cell(c.any, "%.3f") << " | "
             << cell(c.any_vs_embree, "%.3g") << " |\n";
+    return out.str();
+}
+
+std::string verdict_of(const std::vector<double>& ratios) {
+    if (int(ratios.size()) < min_processes) return "too few processes";
+    const auto [lo, hi] = std::minmax_element(ratios.begin(), ratios.end());
+    return *lo > 1.0 ? "faster" : *hi < 1.0 ? "slower" : "level";
+}
+
+std::vector<comparison> compare_rows(const std::vector<std::vector<race_row>>& processes, const std::string& a,
+                                     const std::string& b) {
+    for (const std::string& name : {a, b}) {
+        bool found = false;
+        for (const auto& rows : processes)
+            for (const race_row& r : rows) found = found || r.accel == name;
+        if (!found) throw std::invalid_argument("--compare: no process of the race measured '" + name + "'");
+    }
+    std::vector<comparison> out;
+    const auto find = [&](const std::vector<race_row>& rows, const race_row& like, const std::string& name) {
+        for (const race_row& r : rows)
+            if (r.accel == name && r.scene == like.scene && r.ray_set == like.ray_set) return &r;
+        return static_cast<const race_row*>(nullptr);
+    };
+    for (const race_row& first : processes.front()) {
+        if (first.accel != a) continue;
+        for (const bool any : {false, true}) {
+            comparison c{first.scene, first.ray_set, any ? "any" : "closest", a, b, {}, {}, {}};
+            for (const auto& rows : processes) {
+                const race_row *ra = find(rows, first, a), *rb = find(rows, first, b);
+                if (!ra || !rb) continue;
+                const query_result &qa = any ? ra->any : ra->closest, &qb = any ? rb->any : rb->closest;
+                if (qa.runs && qb.runs && qb.mrays > 0.0) c.ratios.push_back(qa.mrays / qb.mrays);
+            }
+            if (c.ratios.empty()) continue;
+            c.ratio = spread_of(c.ratios);
+            c.verdict = verdict_of(c.ratios);
+            out.push_back(std::move(c));
+        }
+    }
+    return out;
+}
+
+std::string comparisons_csv(const std::vector<comparison>& cs) {
+    std::ostringstream out;
+    out << "scene,rays,query,a,b,processes,ratio_median,ratio_min,ratio_max,verdict,ratios\n";
+    for (const comparison& c : cs) {
+        out << csv_field(c.scene) << ',' << csv_field(c.ray_set) << ',' << c.query << ',' << csv_field(c.a) << ','
+            << csv_field(c.b) << ',' << c.ratios.size() << ',' << num(c.ratio.median) << ','
+            << num(c.ratio.min) << ',' << num(c.ratio.max) << ',' << c.verdict << ',';
+        for (std::size_t i = 0; i < c.ratios.size(); ++i) out << (i ? " " : "") << num(c.ratios[i]);
+        out << '\n';
+    }
+    return out.str();
+}
+
+std::string comparisons_markdown(const std::vector<comparison>& cs, const std::string& machine) {
+    std::ostringstream out;
+    out << "# Paired comparisons\n\nMachine: " << machine << ". A / B: the ratio of A's Mrays/s to B's within "
+           "each process, the median across processes (the smallest and the largest in brackets). Verdict: "
+           "faster where A beat B in every process, slower where B beat A in every one, level otherwise (at least "
+        << min_processes << " processes).\n\n| scene | rays | query | A | B | n | A / B | verdict |\n"
+        << "|---|---|---|---|---|---:|---:|---|\n";
+    for (const comparison& c : cs)
+        out << "| " << c.scene << " | " << c.ray_set << " | " << c.query << " | " << c.a << " | " << c.b << " | "
+            << c.ratios.size() << " | " << cell(c.ratio, "%.3f") << " | " << c.verdict << " |\n";
     return out.str();
 }
 

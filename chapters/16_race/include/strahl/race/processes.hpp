@@ -46,6 +46,33 @@ std::string spread_markdown(const std::vector<combined_row>& rows, int processes
 // that is slow as a whole shows as a dip in every line at once, and a ratio as a constant gap.
 std::vector<plot> spread_plot(const std::vector<std::vector<race_row>>& processes);
 
+// Two rows compared, the claim rule: which of A and B is faster on one scene, ray set and query. Each
+// process gives one paired ratio, A's Mrays/s over B's in that process (the same rays, the same machine
+// state; the order of the rows alternates from process to process), so that a process slow as a whole
+// leaves the ratio alone. The verdict: "faster" where A beat B in every process, "slower" where B beat A in
+// every process, "level" otherwise (the noise covers the gap). With two rows of equal speed, all of n
+// processes agree by chance with probability 2^(1-n): 1 in 16 for 5 processes, so verdicts need at least
+// min_processes; with fewer, "too few processes".
+struct comparison {
+    std::string scene, ray_set, query;  // query: "closest" or "any"
+    std::string a, b;
+    std::vector<double> ratios;  // A / B, one per process that measured both
+    spread ratio;
+    std::string verdict;
+};
+inline constexpr int min_processes = 5;
+std::string verdict_of(const std::vector<double>& ratios);
+
+// Every (scene, ray set, query) that both rows measured, in the first process's order. Throws
+// std::invalid_argument naming a row that no process measured.
+std::vector<comparison> compare_rows(const std::vector<std::vector<race_row>>& processes, const std::string& a,
+                                     const std::string& b);
+
+// compare.csv: scene, rays, query, a, b, processes, ratio_median, ratio_min, ratio_max, verdict, then each
+// process's ratio; and the same as a Markdown table.
+std::string comparisons_csv(const std::vector<comparison>& c);
+std::string comparisons_markdown(const std::vector<comparison>& c, const std::string& machine);
+
 // Runs this program (/proc/self/exe) with `args` (argv[1...]) as a child process whose standard output and
 // error go to `log`; waits for it and returns its exit status (128 + the signal's number if a signal ended it).
 int run_self(const std::vector<std::string>& args, const std::filesystem::path& log);
