@@ -47,12 +47,21 @@ void wide_packet_walk(const ch13::wide_bvh<N, M>& tree, ray_packet<K, 1>& p, Sta
     std::uint32_t ref = tree.root_ref;
     unsigned lanes = p.active[0];
     lane_rays<K> r = load(p, 0);
+    // The lanes' extremes of t0 and t1 (over every lane: lanes out of play only make them more cautious),
+    // computed again only when t1 changes (after a leaf, or rays that left).
+    const float t0_hi = simd::reduce_max(r.t0);
+    float t1_lo = simd::reduce_min(r.t1), t1_hi = simd::reduce_max(r.t1);
+    const auto reach = [&] {
+        reload_reach(r, p, 0);
+        t1_lo = simd::reduce_min(r.t1), t1_hi = simd::reduce_max(r.t1);
+        p.t1_hi = t1_hi;  // the frustum's far end
+    };
     if (tree.nodes.empty() && !ch13::is_leaf(ref)) return;
     for (;;) {
         if (hooks.leave(lanes, ref)) {
             // The lanes' rays went on alone through `ref`: the packet skips it, with their new reach.
             if (p.active[0] == 0) return;  // any hit: every ray answered
-            reload_reach(r, p, 0);
+            reach();
         } else if (!ch13::is_leaf(ref)) {
             const ch13::wide_node<N>& n = tree.nodes[ref];
             stats.node_visit();
@@ -67,8 +76,7 @@ void wide_packet_walk(const ch13::wide_bvh<N, M>& tree, ray_packet<K, 1>& p, Sta
             alignas(64) float bounds[N];
             if constexpr (Coherent) {
                 simd::vfloat<N> bound;
-                // (Over every lane: lanes out of play only make the bounds more cautious.)
-                candidates = frustum_children(p, n, bound, simd::reduce_max(r.t0), simd::reduce_min(r.t1), covered);
+                candidates = frustum_children(p, n, bound, t0_hi, t1_lo, covered);
                 bound.store(bounds);
             }
             for (unsigned rest = candidates; rest != 0; rest &= rest - 1) {
@@ -112,7 +120,7 @@ void wide_packet_walk(const ch13::wide_bvh<N, M>& tree, ray_packet<K, 1>& p, Sta
         } else {
             leaf(r, lanes, at, ref);
             if (p.active[0] == 0) return;  // any hit: every ray answered
-            reload_reach(r, p, 0);  // tmax shrunk by the hits
+            reach();  // tmax shrunk by the hits
         }
         // Pop the next child whose lanes are still in play and whose nearest entry still lies within reach.
         for (;;) {
@@ -120,9 +128,8 @@ void wide_packet_walk(const ch13::wide_bvh<N, M>& tree, ray_packet<K, 1>& p, Sta
             const entry e = stack[--top];
             unsigned keep = e.lanes & p.active[0];
             if (keep == 0) continue;
-            // (Over every lane: a larger reach only keeps more.)
             if constexpr (Nearest)
-                if (!(e.t <= simd::reduce_max(r.t1))) continue;
+                if (!(e.t <= t1_hi)) continue;
             ref = e.ref, lanes = keep;
             break;
         }
