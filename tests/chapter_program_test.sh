@@ -64,7 +64,7 @@ case $nn in
 14) args=(--quick --width 32 --repeats 1 --flight-frames 2 --flight-width 64 --flight-height 36 --out "$out")
     files=(sweep.csv threshold.svg stadium_left.png flight.csv flight_first.png flight_last.png)
     sized=(flight_first.png:"64 36" flight_last.png:"64 36") ;;
-15) args=(--quick --out "$out") files=(escapes.csv spawn.csv far.csv table.csv escape_vs_speed.svg)
+15) args=(--quick --out "$out") files=(escapes.csv spawn.csv far.csv scale.csv scale.svg table.csv escape_vs_speed.svg)
     sized=() ;;
 *) echo "$0: no end-to-end run known for chapter $nn" >&2; exit 2 ;;
 esac
@@ -239,7 +239,8 @@ fi
 
 # Chapter 15: no ray escapes the watertight test (float or double) in brute force or in a tree walked with a
 # conservative or the fast box test; the table has a row per test and box; spawn.csv a row per offset and
-# placement (13 placements x 4 offsets); --scenes refuses a scene that is not there; --from-race's ratios.
+# placement (13 placements x 4 offsets); scale.csv's rows and the course's range; --scenes refuses a scene
+# that is not there; --from-race's ratios.
 if [[ $nn == 15 ]]; then
     bad=$(awk -F, 'NR > 1 && ($6 == "watertight" || $6 == "watertight-double") && $7 != "plain" && $10 != 0' \
         "$out/escapes.csv")
@@ -259,6 +260,21 @@ if [[ $nn == 15 ]]; then
     [[ -z $bad ]] || fail "far.csv: moved, Moeller-Trumbore's hits differ from the watertight test's at: $bad"
     [[ $(awk -F, 'NR > 1 && $2 == "mt" && $3 == "kept" && $6 > 0' "$out/far.csv" | wc -l) -gt 0 ]] ||
         fail "far.csv: with origins kept, Moeller-Trumbore's tree never differs (the effect the frame removes)"
+    # The teapot scaled from 1e-30 to 1e16 (47 decades, a row per test): within the course's range (extent at
+    # least min_extent, 1e-8; coordinates within max_coordinate, 1e12) every test but the paper's epsilon
+    # and Embree find every hit they find at scale 1; below it Moeller-Trumbore's loses them. --replot draws
+    # the run's plot again from its CSV, byte for byte, and refuses another CSV.
+    rows=$(tail -n +2 "$out/scale.csv" | wc -l)
+    [[ $rows -ge 235 && $((rows % 47)) -eq 0 ]] || fail "scale.csv has $rows rows, not 47 scales x 5 or more tests"
+    [[ $(head -n 1 "$out/scale.csv") == "scale,extent,coordinate,test,rays,hits,expected" ]] || fail "scale.csv's header"
+    bad=$(awk -F, 'NR > 1 && $2 >= 1e-8 && $3 <= 1e12 && $4 != "mt-epsilon" && $6 != $7' "$out/scale.csv")
+    [[ -z $bad ]] || fail "scale.csv: a test loses hits within the course's range: $bad"
+    [[ $(awk -F, 'NR > 1 && $2 < 1e-8 && $4 == "mt" && $6 < $7' "$out/scale.csv" | wc -l) -gt 0 ]] ||
+        fail "scale.csv: Moeller-Trumbore loses no hit below min_extent (the loss the loader's rule prevents)"
+    runs "--replot scale.csv" 0 "$program" --replot "$out/scale.csv" --out "$dir/replot"
+    cmp -s "$dir/replot/scale.svg" "$out/scale.svg" || fail "--replot: scale.svg not as the run drew it"
+    runs "--replot of a foreign file" 1 "$program" --replot "$out/far.csv" --out "$dir/replot2"
+    contains "$dir/err" "is not a scale.csv written by ch15" "--replot of a foreign file"
     runs "--scenes of a missing file" 2 "$program" --quick --scenes "$dir/no_such.ply" --out "$dir/never"
     contains "$dir/err" "--scenes: no file" "--scenes of a missing file"
     [[ ! -e $dir/never ]] || fail "--scenes of a missing file: --out $dir/never was created"

@@ -5,7 +5,9 @@
 // through cracks (escapes.csv). Secondary rays spawned from hit points with no offset, a fixed epsilon,
 // pbrt-v4's error bound and Waechter and Binder's integer offset: self-hits and leaks (spawn.csv). The teapot
 // seen from 1e3 to 1e7: each test's tree against its brute force, bit for bit, with the rays' origins kept
-// and moved to the scene (far.csv; --far-only writes just that). Then the
+// and moved to the scene (far.csv; --far-only writes just that). The teapot scaled by powers of two from 1e-30
+// to 1e16: the hits of each test by brute force and of Embree, where products underflow or overflow
+// (scale.csv, scale.svg; --scale-only writes just those, --replot redraws the plot from a scale.csv). Then the
 // chapter's table: escapes and self-hits per million rays against Mrays/s on the bunny and Sponza
 // (table.csv, escape_vs_speed.svg). Embree with and without its robust flag on the same aimed rays.
 #include "strahl/camera.hpp"
@@ -20,7 +22,9 @@
 #include "strahl/program.hpp"
 #include "strahl/timer.hpp"
 #include <algorithm>
+#include <array>
 #include <cctype>
+#include <cmath>
 #include <cstring>
 #include <cstdio>
 #include <fstream>
@@ -240,6 +244,173 @@ std::string run_far(bool quick) {
     return csv.str();
 }
 
+// 2c. The small and the large extreme: the teapot and its primary rays scaled about the origin by the power
+// of two nearest each decade from 1e-30 to 1e16 (experiments.hpp: the scaling itself rounds nothing), each
+// triangle test by brute force (no ray frame: the test alone) and Embree with and without its robust flag,
+// against the hits each finds at scale 1 (scale.csv, scale.svg). The scene is scaled in code: the loader's
+// range (scene.hpp's min_extent and max_coordinate) would refuse the ends, and the failure is what is
+// measured. The log also gives, at scale 1, the smallest products of the hits' Moeller-Trumbore test, from
+// which the scales where they leave float's normal range follow (t's numerator first: three lengths).
+struct scale_row {
+    double scale = 0, extent = 0, coordinate = 0;
+    std::string test;
+    std::size_t rays = 0, hits = 0, expected = 0;
+};
+const std::string scale_header = "scale,extent,coordinate,test,rays,hits,expected";
+
+// The smallest |det| = |e1 . (d x e2)| (two lengths) and |t's numerator| = |e2 . ((org - v0) x e1)| (three)
+// of the closest hits, in double, where the rays hit at scale 1.
+void print_smallest_products(const triangle_mesh& m, const std::vector<ray>& rays) {
+    brute_tests<test_kind::mt> brute;
+    scene s;
+    s.mesh = m;
+    brute.build(s);
+    std::vector<hit> hits(rays.size());
+    brute.intersect(rays, hits);
+    double det_min = inf, num_min = inf;
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+        if (!hits[i].found()) continue;
+        const std::array<vec3, 3> t = m.triangle(hits[i].prim);
+        const glm::dvec3 v0(t[0]), e1 = glm::dvec3(t[1]) - v0, e2 = glm::dvec3(t[2]) - v0, d(rays[i].dir);
+        const glm::dvec3 q = glm::cross(glm::dvec3(rays[i].org) - v0, e1);
+        det_min = std::min(det_min, std::abs(glm::dot(e1, glm::cross(d, e2))));
+        num_min = std::min(num_min, std::abs(glm::dot(e2, q)));
+    }
+    const double normal = 0x1p-126, least = 0x1p-149;
+    std::printf("  at scale 1, the hits' smallest |det| (two lengths) %.3g, smallest |t's numerator| (three lengths) "
+                "%.3g: scaled by s they become s^2 and s^3 times that.\n  t's numerator leaves float's normal range "
+                "(2^-126, 1.2e-38; flush-to-zero makes it 0) below s = %.3g and rounds to 0 (below 2^-150) below "
+                "s = %.3g;\n  det leaves it below s = %.3g (and 1/det overflows below about s = %.3g)\n",
+                det_min, num_min, std::cbrt(normal / num_min), std::cbrt(0.5 * least / num_min),
+                std::sqrt(normal / det_min), std::sqrt(0x1p-128 / det_min));
+}
+
+// Brute force with test K, no ray frame (the triangle test alone: nothing is far here, and a frame computed
+// from a vanishing box would itself misbehave), its hits on rays.
+template <test_kind K>
+std::size_t brute_hits(const scene& s, const std::vector<ray>& rays) {
+    brute_tests<K> a;
+    a.build(s);
+    a.set_frame(ray_frame());
+    return count_hits(a, rays);
+}
+std::size_t brute_hits(test_kind k, const scene& s, const std::vector<ray>& rays) {
+    switch (k) {
+        case test_kind::mt: return brute_hits<test_kind::mt>(s, rays);
+        case test_kind::mt_epsilon: return brute_hits<test_kind::mt_epsilon>(s, rays);
+        case test_kind::mt_edges: return brute_hits<test_kind::mt_edges>(s, rays);
+        case test_kind::watertight: return brute_hits<test_kind::watertight>(s, rays);
+        case test_kind::watertight_double: return brute_hits<test_kind::watertight_double>(s, rays);
+    }
+    return 0;
+}
+
+std::vector<scale_row> run_scale(bool quick) {
+    const int w = quick ? 16 : 64, h = quick ? 12 : 48;
+    std::printf("\n2c. the small and the large extreme: the teapot (builtin_scene(\"teapot\")'s mesh) and %d x %d "
+                "primary rays scaled by 2^k, k nearest each decade from 1e-30 to 1e16; brute force with each test "
+                "(no ray frame) and Embree, hits against their own at scale 1\n", w, h);
+    const triangle_mesh teapot = teapot_mesh(8);
+    const std::vector<ray> rays = scale_view_rays(w, h);
+    print_smallest_products(teapot, rays);
+    const bool embree = embree_available();
+    if (!embree) std::printf("  Embree: not available in this build (no embree rows)\n");
+    const std::vector<float> steps = scale_steps(-30, 16);
+    std::vector<std::string> tests;
+    for (const test_kind k : all_tests) tests.push_back(name(k));
+    if (embree) tests.push_back("embree"), tests.push_back("embree-robust");
+    // Hits of test `which` on the teapot scaled by s.
+    const auto hits_at = [&](std::size_t which, float s) -> std::size_t {
+        const std::vector<ray> r = scaled(rays, s);
+        scene sc;
+        sc.name = "teapot";
+        sc.mesh = scaled(teapot, s);
+        if (which < std::size(all_tests)) return brute_hits(all_tests[which], sc, r);
+        const std::vector<std::uint8_t> f = embree_found(sc.mesh, r, tests[which] == "embree-robust");
+        return std::size_t(std::count(f.begin(), f.end(), std::uint8_t(1)));
+    };
+    const float extent = largest_side(teapot);
+    float reach = 0.0f;
+    for (const vec3& p : teapot.positions) reach = std::max({reach, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+    std::vector<scale_row> rows;
+    progress_bar bar("scale", tests.size() * (steps.size() + 1), "runs");
+    for (std::size_t k = 0; k < tests.size(); ++k) {
+        const std::size_t expected = hits_at(k, 1.0f);
+        bar.add();
+        for (const float s : steps) {
+            rows.push_back({double(s), double(extent * s), double(reach * s), tests[k], rays.size(), hits_at(k, s), expected});
+            bar.add();
+        }
+    }
+    bar.finish();
+    // The table: a row per scale, per test its hits of those at scale 1.
+    std::printf("  %-10s %-10s", "scale", "extent");
+    for (const std::string& t : tests) std::printf(" %17s", t.c_str());
+    std::printf("\n");
+    for (std::size_t i = 0; i < steps.size(); ++i) {
+        std::printf("  %-10.3g %-10.3g", double(steps[i]), double(extent * steps[i]));
+        for (std::size_t k = 0; k < tests.size(); ++k) {
+            const scale_row& r = rows[k * steps.size() + i];
+            std::printf(" %11zu/%5zu", r.hits, r.expected);
+        }
+        std::printf("\n");
+    }
+    return rows;
+}
+
+std::string scale_csv(const std::vector<scale_row>& rows) {
+    std::ostringstream csv;
+    csv << scale_header << '\n';
+    for (const scale_row& r : rows)
+        csv << r.scale << ',' << r.extent << ',' << r.coordinate << ',' << r.test << ',' << r.rays << ',' << r.hits
+            << ',' << r.expected << '\n';
+    return csv.str();
+}
+
+// --replot: the rows of a scale.csv this program wrote.
+std::vector<scale_row> read_scale_csv(const fs::path& file) {
+    std::vector<scale_row> rows;
+    for (const csv_row& r : read_csv(file, scale_header, "a scale.csv written by ch15")) {
+        const auto num = [&](std::size_t k) { return csv_number(file, r, k); };
+        rows.push_back({num(0), num(1), num(2), r.cells[3], std::size_t(num(4)), std::size_t(num(5)), std::size_t(num(6))});
+    }
+    return rows;
+}
+
+// Hits found (as a fraction of those at scale 1) against the teapot's extent, a line per test; dashed, the
+// course's range: min_extent, and the extent at which the teapot's largest coordinate reaches max_coordinate.
+void write_scale_plot(const std::vector<scale_row>& rows, const fs::path& svg) {
+    plot p{"Hits against the scene's size: the teapot scaled by powers of two (chapter 15)",
+           "the teapot's extent (largest side of its box), units", "hits found / hits at scale 1", true, false, {}};
+    std::vector<std::string> order;
+    double per_coordinate = 0;  // extent / largest coordinate (the same in every row)
+    for (const scale_row& r : rows) {
+        if (std::find(order.begin(), order.end(), r.test) == order.end()) order.push_back(r.test);
+        if (r.coordinate > 0) per_coordinate = r.extent / r.coordinate;
+    }
+    // Tests that find as many hits at every scale share one line ("mt = mt-edges"); the watertight tests are
+    // dashed, so that the Moeller-Trumbore line shows where it runs under them.
+    for (std::size_t k = 0; k < order.size(); ++k) {
+        plot_series s{order[k], {}, {}, true, {}, int(k)};
+        for (const scale_row& r : rows)
+            if (r.test == order[k]) s.x.push_back(r.extent), s.y.push_back(r.expected ? double(r.hits) / double(r.expected) : 0.0);
+        s.dashed = order[k].rfind("watertight", 0) == 0;
+        bool merged = false;
+        for (plot_series& before : p.series)
+            if (before.x == s.x && before.y == s.y) before.label += " = " + s.label, merged = true;
+        if (!merged) p.series.push_back(s);
+    }
+    const auto rule = [&](const std::string& label, double x) {
+        plot_series line{label, {x, x}, {0.0, 1.0}, true, {}, 9};
+        line.dashed = true, line.markers = false;
+        p.series.push_back(line);
+    };
+    const auto decade = [](float v) { return "1e" + std::to_string(std::lround(std::log10(double(v)))); };
+    rule("extent " + decade(min_extent) + " (min_extent)", double(min_extent));
+    if (per_coordinate > 0) rule("coordinates " + decade(max_coordinate) + " (max_coordinate)", double(max_coordinate) * per_coordinate);
+    write_svg(svg, to_svg(p, 900, 520));
+}
+
 // 3b. Closest-hit speed on one thread, primary and diffuse rays; each structure's hits compared with the
 // fast walk's with the same test (which equals brute force with that test).
 void run_speed(const scene& s, int width, int height, int repeats, std::map<key, tally>& t) {
@@ -387,13 +558,15 @@ int run(int argc, const char* const* argv) {
                                          "200000, 1000 with --quick; a quarter of it per structure for the self-hits)")
         .option("threads", "N", "0", "threads counting escapes and self-hits, 0..1024 (0: one per core); speeds are "
                                      "always timed on one thread")
-        .option("out", "DIR", "", "write escapes.csv, spawn.csv, far.csv, table.csv and escape_vs_speed.svg into DIR/ "
+        .option("out", "DIR", "", "write escapes.csv, spawn.csv, far.csv, scale.csv, scale.svg, table.csv and escape_vs_speed.svg into DIR/ "
                                    "(default out/15_robustness/)")
         .option("from-race", "DIR", "", "only write race_ratios.csv: the same-process speed ratios of a race run "
                 "with --processes N and chapter 15's rows (DIR/processes/*/race.csv), median and range")
         .flag("force", "replace existing files in a folder named with --out")
-        .flag("quick", "the two smallest spheres, 1000 spawn points, the far-away teapot at 32 x 24 rays, the teapot at 64 x 48 for the speed columns, one repeat")
-        .flag("far-only", "only the teapot seen from far away: write far.csv and nothing else");
+        .flag("quick", "the two smallest spheres, 1000 spawn points, the far-away teapot at 32 x 24 rays, the scaled teapot at 16 x 12, the teapot at 64 x 48 for the speed columns, one repeat")
+        .flag("far-only", "only the teapot seen from far away: write far.csv and nothing else")
+        .flag("scale-only", "only the teapot scaled from 1e-30 to 1e16: write scale.csv and scale.svg and nothing else")
+        .option("replot", "CSV", "", "only redraw scale.svg from a scale.csv written earlier (no tracing)");
     if (!args.parse(argc, argv)) return 0;
     const fs::path single_folder = args.has("out") ? fs::path(args.get("out")) : fs::path("out/15_robustness");
     if (args.has("from-race")) {
@@ -405,6 +578,24 @@ int run(int argc, const char* const* argv) {
         return 0;
     }
     const bool quick = args.has("quick");
+    if (args.has("replot")) {
+        // The table read first: a file that is no scale.csv leaves no folder behind.
+        const std::vector<scale_row> rows = read_scale_csv(args.get("replot"));
+        prepare_output(single_folder / "scale.svg", args.has("out"), args.has("force"));
+        write_scale_plot(rows, single_folder / "scale.svg");
+        std::printf("wrote %s from %s\n", (single_folder / "scale.svg").string().c_str(), args.get("replot").c_str());
+        return 0;
+    }
+    if (args.has("scale-only")) {
+        const fs::path& folder = single_folder;
+        for (const char* f : {"scale.csv", "scale.svg"}) prepare_output(folder / f, args.has("out"), args.has("force"));
+        const thread_limit counting(read_threads(args, 0));
+        const std::vector<scale_row> rows = run_scale(quick);
+        write_text(folder / "scale.csv", scale_csv(rows));
+        write_scale_plot(read_scale_csv(folder / "scale.csv"), folder / "scale.svg");  // as --replot draws it
+        std::printf("wrote %s, %s\n", (folder / "scale.csv").string().c_str(), (folder / "scale.svg").string().c_str());
+        return 0;
+    }
     if (args.has("far-only")) {
         const fs::path& folder = single_folder;
         prepare_output(folder / "far.csv", args.has("out"), args.has("force"));
@@ -423,17 +614,19 @@ int run(int argc, const char* const* argv) {
     fs::path folder = "out/15_robustness";
     const bool user_named = args.has("out");
     if (user_named) folder = args.get("out");
-    for (const char* f : {"escapes.csv", "spawn.csv", "far.csv", "table.csv", "escape_vs_speed.svg"})
+    for (const char* f : {"escapes.csv", "spawn.csv", "far.csv", "scale.csv", "scale.svg", "table.csv", "escape_vs_speed.svg"})
         prepare_output(folder / f, user_named, args.has("force"));
 
     const timer clock;
     std::map<key, tally> t;
     std::string escapes_csv, spawn_csv, far_csv;
+    std::vector<scale_row> scale_rows;
     {
         const thread_limit counting(threads);
         escapes_csv = run_escapes(quick, t);
         spawn_csv = run_spawn(std::size_t(points));
         far_csv = run_far(quick);
+        scale_rows = run_scale(quick);
         run_self_hits(std::size_t(points) / 4, t);
     }
     std::printf("\n4. speed: closest hit, one thread\n");
@@ -448,9 +641,11 @@ int run(int argc, const char* const* argv) {
     write_text(folder / "escapes.csv", escapes_csv);
     write_text(folder / "spawn.csv", spawn_csv);
     write_text(folder / "far.csv", far_csv);
+    write_text(folder / "scale.csv", scale_csv(scale_rows));
+    write_scale_plot(read_scale_csv(folder / "scale.csv"), folder / "scale.svg");  // as --replot draws it
     write_text(folder / "table.csv", table_csv);
     write_plot(t, folder / "escape_vs_speed.svg");
-    std::printf("wrote %s/{escapes.csv, spawn.csv, far.csv, table.csv, escape_vs_speed.svg} in %.1f s\n", folder.string().c_str(),
+    std::printf("wrote %s/{escapes.csv, spawn.csv, far.csv, scale.csv, scale.svg, table.csv, escape_vs_speed.svg} in %.1f s\n", folder.string().c_str(),
                 clock.seconds());
     return 0;
 }

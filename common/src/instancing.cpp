@@ -1,6 +1,7 @@
 // Instanced scenes: transforms, the scene file reader, flattening (instancing.hpp).
 #include "strahl/instancing.hpp"
 #include "strahl/rng.hpp"
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <fstream>
@@ -224,6 +225,7 @@ instanced_meshes load_instanced(const std::filesystem::path& file, std::ostream*
     if (!in) throw load_error(file.string() + ": cannot be opened");
     instanced_meshes out;
     std::map<std::string, std::uint32_t> by_name;
+    std::vector<aabb> mesh_boxes;  // each mesh's box, for the instances' extents
     line_reader reader{file};
     std::uint64_t triangles = 0;
     std::string text;
@@ -246,6 +248,7 @@ instanced_meshes load_instanced(const std::filesystem::path& file, std::ostream*
             by_name[name] = std::uint32_t(out.meshes.size());
             out.meshes.push_back(load_mesh(p, log));
             out.names.push_back(name);
+            mesh_boxes.push_back(out.meshes.back().bounds());
         } else if (key == "instance" || key == "field") {
             const std::string& name = reader.word("a mesh name");
             const auto it = by_name.find(name);
@@ -258,6 +261,7 @@ instanced_meshes load_instanced(const std::filesystem::path& file, std::ostream*
                 if (triangles > 0xFFFFFFFEull)
                     reader.fail(std::to_string(triangles) + " triangles in all, more than 32-bit primitive ids can number");
             };
+            const std::size_t first_new = out.instances.size();
             if (key == "instance") {
                 add(1);
                 out.instances.push_back({it->second, reader.transform()});
@@ -270,6 +274,14 @@ instanced_meshes load_instanced(const std::filesystem::path& file, std::ostream*
                 const affine after = reader.transform();
                 add(std::uint64_t(nx) * std::uint64_t(nz));
                 add_field(out, it->second, nx, nz, dx, dz, seed, affine{}, after);
+            }
+            // Each instance as placed holds to the course's smallest extent, as a mesh file does (the flattened
+            // copy every structure but chapter 10's traces has the instance's size; the world box, which holds
+            // every instance's, then holds to it too).
+            for (std::size_t k = first_new; k < out.instances.size(); ++k) {
+                const vec3 e = transformed(mesh_boxes[it->second], out.instances[k].to_world).extent();
+                const float span = std::max({e.x, e.y, e.z});
+                if (!(span >= min_extent)) reader.fail("mesh '" + name + "' as this line places it " + below_min_extent(span));
             }
         } else if (key == "camera") {
             std::array<float, 7> c{0, 0, 0, 0, 0, 0, 40.0f};

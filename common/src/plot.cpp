@@ -71,6 +71,16 @@ struct axis {
         for (double v = std::ceil(lo / step) * step; v <= hi + 1e-9 * step; v += step) t.push_back(v);
         return t;
     }
+    // Whether tick t gets a number: every tick, except on a log axis of more than 12 decades, where only the
+    // decades whose exponent is a multiple of 2, 5 or 10 (the first that leaves at most 12) do; every decade
+    // keeps its grid line.
+    bool labelled(double t) const {
+        if (!log) return true;
+        const long decades = std::lround(std::log10(hi) - std::log10(lo));
+        if (decades <= 12) return true;
+        const long step = decades <= 24 ? 2 : decades <= 60 ? 5 : 10;
+        return std::lround(std::log10(t)) % step == 0;
+    }
 };
 
 struct frame_geometry {
@@ -87,8 +97,10 @@ void y_axis(std::ostringstream& out, const axis& ay, const frame_geometry& g, co
     for (double t : ay.ticks()) {
         const double y = g.bottom - ay.unit(t) * (g.bottom - g.top);
         out << "<line x1=\"" << g.left << "\" x2=\"" << g.right << "\" y1=\"" << y << "\" y2=\"" << y
-            << "\" stroke=\"#e0e0e0\"/><text x=\"" << g.left - 6 << "\" y=\"" << y + 4
-            << "\" text-anchor=\"end\">" << number(t) << "</text>\n";
+            << "\" stroke=\"#e0e0e0\"/>";
+        if (ay.labelled(t))
+            out << "<text x=\"" << g.left - 6 << "\" y=\"" << y + 4 << "\" text-anchor=\"end\">" << number(t) << "</text>";
+        out << "\n";
     }
     out << "<text transform=\"translate(18," << (g.top + g.bottom) / 2 << ") rotate(-90)\" text-anchor=\"middle\">"
         << escape(label) << "</text>\n";
@@ -182,8 +194,10 @@ std::string to_svg(const plot& p, int width, int height) {
     for (double t : ax.ticks()) {
         const double x = g.left + ax.unit(t) * (g.right - g.left);
         out << "<line x1=\"" << x << "\" x2=\"" << x << "\" y1=\"" << g.top << "\" y2=\"" << g.bottom
-            << "\" stroke=\"#e0e0e0\"/><text x=\"" << x << "\" y=\"" << g.bottom + 16 << "\" text-anchor=\"middle\">"
-            << number(t) << "</text>\n";
+            << "\" stroke=\"#e0e0e0\"/>";
+        if (ax.labelled(t))
+            out << "<text x=\"" << x << "\" y=\"" << g.bottom + 16 << "\" text-anchor=\"middle\">" << number(t) << "</text>";
+        out << "\n";
     }
     out << "<text x=\"" << (g.left + g.right) / 2 << "\" y=\"" << height - 12 << "\" text-anchor=\"middle\">"
         << escape(p.x_label + (p.log_x ? " (log)" : "")) << "</text>\n";

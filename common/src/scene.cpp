@@ -16,7 +16,7 @@
 //   6. meshes are concatenated in node order: depth first from the root, a node's own meshes in its
 //      mMeshes order before its children, each with the node's accumulated transform; a mesh referenced by
 //      two nodes appears twice. Points and lines are skipped; unreferenced vertices are dropped;
-//   7. every coordinate within max_coordinate (scene.hpp says why);
+//   7. every coordinate within max_coordinate, the mesh's extent at least min_extent (scene.hpp says why);
 //   8. with a log, a warning when the mesh is below float32 resolution at its distance from the origin.
 // Reference: assimp 5.2 documentation, https://assimp-docs.readthedocs.io (Importer, aiScene, aiNode).
 #include "strahl/scene.hpp"
@@ -962,6 +962,16 @@ struct gatherer {
 
 }  // namespace
 
+std::string below_min_extent(float extent) {
+    static_assert(min_extent == 1e-8f && max_coordinate == 1e12f, "the message names both");
+    std::ostringstream what;
+    what << "is " << extent << " across (the largest side of its bounding box), below 1e-8, the smallest extent "
+            "the course accepts (its range: extents from 1e-8 to coordinates of +-1e12; below it the float "
+            "triangle tests' products of three lengths underflow and hits are lost): scale the scene up (by a "
+            "power of two, which is exact)";
+    return what.str();
+}
+
 triangle_mesh load_mesh(const std::filesystem::path& file, std::ostream* log) {
     // Step 1: the file system.
     std::error_code ec;
@@ -1009,6 +1019,23 @@ triangle_mesh load_mesh(const std::filesystem::path& file, std::ostream* log) {
                     "overflow above about 7e12): scale the scene down";
             fail(file, what.str());
         }
+    // Step 7, the other end: below min_extent the tests' products of three lengths underflow.
+    {
+        const aabb box = mesh.bounds();
+        const vec3 e = box.extent(), far = glm::max(glm::abs(box.min), glm::abs(box.max));
+        const float span = std::max({e.x, e.y, e.z}), reach = std::max({far.x, far.y, far.z});
+        if (!(span >= min_extent)) {
+            std::string what = below_min_extent(span);
+            // A mesh whose corners float rounded together where it lies (step 8's case, taken to 0 or nearly).
+            if (span <= std::ldexp(reach, -20)) {
+                std::ostringstream where;
+                where << "; it lies " << reach << " from the origin, where float holds nothing that small (about 7 "
+                         "significant digits): move it nearer the origin";
+                what += where.str();
+            }
+            fail(file, what);
+        }
+    }
     if (log) {
         *log << summary(file.filename().string(), mesh.triangle_count(), mesh.positions.size());
         if (skipped > 0) *log << " (" << with_thousands(skipped) << " points and lines skipped)";

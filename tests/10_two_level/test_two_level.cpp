@@ -10,6 +10,9 @@
 #include "strahl/instancing.hpp"
 #include "strahl/procedural.hpp"
 #include <catch2/catch.hpp>
+#include <algorithm>
+#include <cmath>
+#include <fstream>
 
 using namespace strahl;
 using namespace strahl::ch10;
@@ -176,6 +179,81 @@ TEST_CASE("ch10 two-level: bad updates are refused with a reason, the structure 
     CHECK_THROWS_AS(t.set_vertices(0, std::vector<vec3>(3), mesh_update::refit), std::invalid_argument);
     CHECK_THROWS_AS(t.set_vertices(9, {}, mesh_update::refit), std::invalid_argument);
     CHECK(disagreements(*a, s, rays_for(s.mesh.bounds(), 8, 300)) == 0);
+}
+
+namespace {
+// Closest hits found by brute force over a flattened mesh (the scene every structure but chapter 10's traces).
+std::size_t flat_hits(const triangle_mesh& m, const std::vector<ray>& rays) {
+    const ch01::triangle_set tris(m);
+    std::size_t n = 0;
+    for (ray r : rays) {
+        hit best;
+        for (std::uint32_t k = 0; k < tris.size(); ++k) tris.intersect(k, r, best);
+        n += best.found();
+    }
+    return n;
+}
+}  // namespace
+
+TEST_CASE("ch10 two-level: a scene file's instance holds to the course's smallest extent (min_extent)", "[ch10]") {
+    // The teapot as a mesh file, placed by a scale 2^k: at the smallest k that keeps it min_extent across it
+    // loads, the two-level walk equals the instanced brute force, and brute force over the flattened copy
+    // finds every hit it finds at scale 1 (the same rays, scaled: a power of two rounds nothing). Half that
+    // scale, and 1e-30, are refused with the extent: there the flattened copy loses its hits (at 1e-30 all),
+    // although the two-level walk, in object space, would not.
+    const std::filesystem::path dir = test::scratch_dir("ch10_min_extent");
+    const triangle_mesh teapot = teapot_mesh(4);
+    {
+        std::ofstream obj(dir / "teapot.obj");
+        obj.precision(9);  // floats back bit for bit
+        for (const vec3& p : teapot.positions) obj << "v " << p.x << ' ' << p.y << ' ' << p.z << '\n';
+        for (const uvec3& t : teapot.indices) obj << "f " << t.x + 1 << ' ' << t.y + 1 << ' ' << t.z + 1 << '\n';
+    }
+    const vec3 e = teapot.bounds().extent();
+    const float extent = std::max({e.x, e.y, e.z});
+    const float edge = std::ldexp(1.0f, int(std::ceil(std::log2(double(min_extent) / double(extent)))));
+    REQUIRE(extent * edge >= min_extent);
+    REQUIRE(extent * edge < 2.0f * min_extent);
+    const auto scene_file = [&](const std::string& name, float scale) {
+        std::ofstream f(dir / name);
+        f.precision(9);
+        f << "mesh teapot teapot.obj\ninstance teapot scale " << scale << '\n';
+        return dir / name;
+    };
+    const vec3 centre = teapot.bounds().centroid();
+    const camera cam(camera_desc{centre + glm::normalize(vec3(0.3f, 0.4f, 1.0f)) * 12.0f, centre, vec3(0, 1, 0),
+                                 2.0f * glm::degrees(std::atan(2.5f / 12.0f))},
+                     32, 24);
+    std::vector<ray> rays;
+    for (int y = 0; y < 24; ++y)
+        for (int x = 0; x < 32; ++x) rays.push_back(cam.pixel_ray(x, y));
+    const std::size_t expected = flat_hits(teapot, rays);
+    REQUIRE(expected > 200);
+    const auto scaled = [&](float s) {
+        std::vector<ray> out = rays;
+        for (ray& r : out) r.org *= s;
+        return out;
+    };
+
+    const scene s = load_scene(scene_file("at_edge.scene", edge));
+    REQUIRE(s.instances);
+    auto a = make_accel();
+    a->build(s);
+    CHECK(disagreements(*a, s, rays_for(s.instances->bounds(), 6, 500)) == 0);
+    CHECK(disagreements(*a, s, scaled(edge)) == 0);
+    CHECK(flat_hits(s.mesh, scaled(edge)) == expected);
+
+    CHECK_THROWS_WITH(load_scene(scene_file("below_edge.scene", 0.5f * edge)),
+                      Catch::Contains("below_edge.scene:2: mesh 'teapot' as this line places it is") &&
+                          Catch::Contains("below 1e-8") && Catch::Contains("scale the scene up"));
+    CHECK_THROWS_WITH(load_scene(scene_file("tiny.scene", 1e-30f)),
+                      Catch::Contains("tiny.scene:2:") && Catch::Contains("e-30 across"));
+    // What the refusal spares: the flattened copy at 1e-30 (made here, past the loader) finds no hit.
+    instanced_meshes tiny;
+    tiny.meshes = {teapot};
+    tiny.names = {"teapot"};
+    tiny.instances = {{0, affine::scale(vec3(1e-30f))}};
+    CHECK(flat_hits(tiny.flatten(), scaled(1e-30f)) == 0);
 }
 
 TEST_CASE("ch10 two-level: the chapter's scene files read as their comments say", "[ch10]") {

@@ -143,6 +143,13 @@ fi
 printf 'v 0 0 0\nv 2e19 0 2e19\nv 0 2e19 2e19\nf 1 2 3\n' >"$dir/huge.obj"
 refuses "a scene too large for float" 1 "huge.obj" --scene "$dir/huge.obj" --gen primary --width 8 --height 8
 contains "$dir/err" "beyond +-1e12, the largest coordinate the course accepts" "a scene too large for float"
+# A scene 1e-30 across (below min_extent, 1e-8, the triangle tests' products underflow and every hit is lost,
+# with exit 0 and "hits 0" before the rule): refused, naming its extent and the range; so is a scene file's
+# instance scaled that small.
+printf 'ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1e-30 0 0\n0 1e-30 0\n3 0 1 2\n' >"$dir/tiny.ply"
+refuses "a scene too small for float" 1 "tiny.ply: is 1e-30 across" --scene "$dir/tiny.ply" --gen primary --width 8 --height 8
+contains "$dir/err" "below 1e-8, the smallest extent the course accepts" "a scene too small for float"
+contains "$dir/err" "extents from 1e-8 to coordinates of +-1e12" "a scene too small for float"
 
 # An instanced scene file (chapter 10): the two-level BVH and brute force over the flattened copy find the
 # same triangles (the same ids) for the same rays; a malformed line is refused with its number.
@@ -157,5 +164,8 @@ cmp -s "$dir/HI" "$dir/HI2" || fail "an instanced scene: ch10-two-level's hits d
 printf 'mesh tri tri.obj\ninstance tri scale 0\n' >"$dir/singular.scene"
 refuses "a singular instance" 1 "singular.scene:2: the transform is singular" --scene "$dir/singular.scene" \
     --gen primary --width 8 --height 8
+printf 'mesh tri tri.obj\ninstance tri scale 1e-30\n' >"$dir/tiny.scene"
+refuses "an instance too small for float" 1 "tiny.scene:2: mesh 'tri' as this line places it is 1e-30 across" \
+    --scene "$dir/tiny.scene" --accel ch10-two-level --gen primary --width 8 --height 8
 
 finish strahl-trace

@@ -117,6 +117,30 @@ TEST_CASE("instancing: malformed scene files name the line and what is wrong", "
     CHECK_THROWS_AS(load_instanced("/nonexistent/x.scene"), load_error);
 }
 
+TEST_CASE("instancing: an instance placed below the course's smallest extent is refused, naming it", "[common][instancing]") {
+    // tri.obj is 1 across. As a mesh file below min_extent is refused (scene.hpp), so is an instance that a
+    // scale makes smaller: the flattened copy, which every structure but chapter 10's traces, would lose its
+    // hits. At min_extent it loads; the largest side counts (a flattened instance is fine).
+    REQUIRE(min_extent == 1e-8f);
+    CHECK(error_of("mesh tri tri.obj\ninstance tri scale 1e-8\n") == "no error");
+    CHECK(error_of("mesh tri tri.obj\ninstance tri scale 1 1 1e-30\n") == "no error");
+    CHECK(error_of("mesh tri tri.obj\ninstance tri translate 3 0 0 scale 1e-8 rotate y 45\n") == "no error");
+    CHECK_THAT(error_of("mesh tri tri.obj\ninstance tri\ninstance tri scale 1e-30\n"),
+               Catch::Contains("bad.scene:3: mesh 'tri' as this line places it is 1e-30 across (the largest side of its "
+                               "bounding box), below 1e-8, the smallest extent the course accepts") &&
+                   Catch::Contains("extents from 1e-8 to coordinates of +-1e12") && Catch::Contains("scale the scene up"));
+    CHECK_THAT(error_of("mesh tri tri.obj\ninstance tri scale 9e-9\n"), Catch::Contains(":2: mesh 'tri'") &&
+                                                                          Catch::Contains("is 9e-09 across"));
+    CHECK_THAT(error_of("mesh tri tri.obj\nfield tri 2 2 1 1 scale 1e-12\n"), Catch::Contains(":2: mesh 'tri'") &&
+                                                                                Catch::Contains("below 1e-8"));
+    // A translation does not make an instance larger: every instance is checked, not the world box.
+    CHECK_THAT(error_of("mesh tri tri.obj\ninstance tri\ninstance tri translate 5 0 0 scale 1e-20\n"),
+               Catch::Contains(":3: mesh 'tri'") && Catch::Contains("below 1e-8"));
+    // load_scene (strahl-trace, the race, chapter 10's program) refuses it the same way.
+    CHECK_THROWS_WITH(load_scene(write_file("tiny.scene", "mesh tri tri.obj\ninstance tri scale 1e-30\n")),
+                      Catch::Contains("tiny.scene:2:") && Catch::Contains("below 1e-8"));
+}
+
 TEST_CASE("instancing: a scene too large to flatten is refused with its size", "[common][instancing]") {
     instanced_meshes inst = make_field(teapot_mesh(8), "teapot", 128, 129, 1.5f);  // 67.6 million triangles
     REQUIRE(inst.triangle_count() > max_flattened_triangles);

@@ -452,23 +452,55 @@ TEST_CASE("scene loader: whole numbers of 20 or more digits in OBJ are read righ
     }
 }
 
+TEST_CASE("scene loader: the course's smallest extent (min_extent): a mesh at it loads, one below is refused",
+          "[common][scene]") {
+    // Below min_extent the triangle tests' products of three lengths underflow float and hits are lost in
+    // silence (chapter 15's scale.csv): refused, naming the extent and the range, as coordinates beyond
+    // max_coordinate are. The extent is the largest side of the box: a flat mesh is fine.
+    const auto dir = test::scratch_dir("scene_loader_min_extent");
+    REQUIRE(min_extent == 1e-8f);
+    const triangle_mesh at = load_mesh(write_file(dir, "at.obj", "v 0 0 0\nv 1e-8 0 0\nv 0 1e-8 0\nf 1 2 3\n"));
+    CHECK(at.bounds().extent().x == min_extent);
+    CHECK(load_mesh(write_file(dir, "flat.obj", "v 0 0 0\nv 1 0 1e-30\nv 0 1e-30 0\nf 1 2 3\n")).triangle_count() == 1);
+    const std::string below = "v 0 0 0\nv 9.9e-9 0 0\nv 0 9.9e-9 0\nf 1 2 3\n";
+    CHECK_THROWS_WITH(load_mesh(write_file(dir, "below.obj", below)),
+                      Contains("below.obj: is 9.9e-09 across (the largest side of its bounding box)") &&
+                          Contains("below 1e-8, the smallest extent the course accepts") &&
+                          Contains("extents from 1e-8 to coordinates of +-1e12") && Contains("underflow") &&
+                          Contains("scale the scene up"));
+    CHECK_THROWS_WITH(load_mesh(write_file(dir, "tiny.ply",
+                          "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+                          "element face 1\nproperty list uchar int vertex_indices\nend_header\n"
+                          "0 0 0\n1e-30 0 0\n0 1e-30 0\n3 0 1 2\n")),
+                      Contains("tiny.ply: is 1e-30 across") && Contains("below 1e-8"));
+    CHECK_THROWS_WITH(load_mesh(write_file(dir, "tiny.gltf", gltf_text({vec3(0), vec3(1e-12f, 0, 0), vec3(0, 1e-12f, 0)},
+                                                                       {0, 1, 2}))),
+                      Contains("tiny.gltf: is 1e-12 across") && Contains("below 1e-8"));
+    // A mesh that is one point: 0 across.
+    CHECK_THROWS_WITH(load_mesh(write_file(dir, "point.obj", "v 1 2 3\nv 1 2 3\nv 1 2 3\nf 1 2 3\n")),
+                      Contains("point.obj: is 0 across") && Contains("below 1e-8"));
+    // load_scene refuses it too (strahl-trace and the race load through it).
+    CHECK_THROWS_WITH(load_scene(dir / "below.obj"), Contains("below 1e-8"));
+}
+
 TEST_CASE("scene loader: distinct vertices are never merged, however close", "[common][scene]") {
+    // A quad 1e-22 across beside a unit triangle (a mesh 1e-22 across is refused: below min_extent).
     const auto dir = test::scratch_dir("scene_loader_no_merge");
     const float s = 1e-22f;
     std::ostringstream log;
     const triangle_mesh obj = load_mesh(write_file(dir, "tiny.obj", "v 0 0 0\nv 1e-22 0 0\nv 1e-22 1e-22 0\nv 0 1e-22 0\n"
-                                                                     "f 1 2 3 4\n"), &log);
-    CHECK(log.str() == "tiny.obj: 2 triangles, 4 vertices\n");
-    REQUIRE(obj.triangle_count() == 2);
+                                                                     "v 1 0 0\nv 0 1 0\nf 1 2 3 4\nf 1 5 6\n"), &log);
+    CHECK(log.str() == "tiny.obj: 3 triangles, 6 vertices\n");
+    REQUIRE(obj.triangle_count() == 3);
     CHECK(obj.triangle(0) == std::array<vec3, 3>{vec3(0, 0, 0), vec3(s, 0, 0), vec3(s, s, 0)});
     const triangle_mesh ply = load_mesh(write_file(dir, "tiny.ply",
-        "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
-        "element face 2\nproperty list uchar int vertex_indices\nend_header\n"
-        "0 0 0\n1e-22 0 0\n1e-22 1e-22 0\n0 1e-22 0\n3 0 1 2\n3 0 2 3\n"));
-    CHECK(ply.positions.size() == 4);
+        "ply\nformat ascii 1.0\nelement vertex 5\nproperty float x\nproperty float y\nproperty float z\n"
+        "element face 3\nproperty list uchar int vertex_indices\nend_header\n"
+        "0 0 0\n1e-22 0 0\n1e-22 1e-22 0\n0 1e-22 0\n1 1 1\n3 0 1 2\n3 0 2 3\n3 0 1 4\n"));
+    CHECK(ply.positions.size() == 5);
     const triangle_mesh gltf = load_mesh(write_file(dir, "tiny.gltf",
-        gltf_text({vec3(0), vec3(s, 0, 0), vec3(s, s, 0), vec3(0, s, 0)}, {0, 1, 2, 0, 2, 3})));
-    CHECK(gltf.positions.size() == 4);
+        gltf_text({vec3(0), vec3(s, 0, 0), vec3(s, s, 0), vec3(0, s, 0), vec3(1)}, {0, 1, 2, 0, 2, 3, 0, 1, 4})));
+    CHECK(gltf.positions.size() == 5);
     // Bit-identical corners are still welded: two faces sharing an edge give 4 vertices, not 6.
     CHECK(load_mesh(write_file(dir, "shared.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 1 0 0\nf 1 2 3\nf 1 3 4\n"))
               .positions.size() == 4);
@@ -562,18 +594,26 @@ TEST_CASE("scene loader: malformed OBJ vertex lines say what is wrong, naming th
 TEST_CASE("scene loader: a mesh below float resolution at its distance from the origin is loaded with a warning",
           "[common][scene]") {
     const auto dir = test::scratch_dir("scene_loader_float_resolution");
-    // An octahedron of radius 1e-3 centred at (1e7, 1e7, 1e7), where floats are 1 apart: every corner rounds
-    // to one point, and every triangle is degenerate.
-    std::string far;
-    for (const char* corner : {"10000000.001 10000000 10000000", "9999999.999 10000000 10000000",
-                               "10000000 10000000.001 10000000", "10000000 9999999.999 10000000",
-                               "10000000 10000000 10000000.001", "10000000 10000000 9999999.999"})
-        far += "v " + std::string(corner) + "\n";
-    far += "f 1 3 5\nf 3 2 5\nf 2 4 5\nf 4 1 5\nf 3 1 6\nf 2 3 6\nf 4 2 6\nf 1 4 6\n";
+    // An octahedron of radius 0.6 centred at (1e7, 1e7, 1e7), where floats are 1 apart: its corners round to
+    // the neighbouring floats, its shape is lost.
+    const auto octahedron = [](const char* plus, const char* minus) {
+        std::string text;
+        for (int axis = 0; axis < 3; ++axis)
+            for (const char* offset : {plus, minus}) {
+                text += "v";
+                for (int k = 0; k < 3; ++k) text += std::string(" ") + (k == axis ? offset : "10000000");
+                text += "\n";
+            }
+        return text + "f 1 3 5\nf 3 2 5\nf 2 4 5\nf 4 1 5\nf 3 1 6\nf 2 3 6\nf 4 2 6\nf 1 4 6\n";
+    };
     std::ostringstream log;
-    const scene s = load_scene(write_file(dir, "far.obj", far), &log);
+    const scene s = load_scene(write_file(dir, "far.obj", octahedron("10000000.6", "9999999.4")), &log);
     CHECK(s.mesh.triangle_count() == 8);
     CHECK_THAT(log.str(), Contains("warning") && Contains("far.obj") && Contains("float"));
+    // Of radius 1e-3 every corner rounds to one point: 0 across, below min_extent, refused, saying where.
+    CHECK_THROWS_WITH(load_scene(write_file(dir, "point.obj", octahedron("10000000.001", "9999999.999"))),
+                      Contains("point.obj: is 0 across") && Contains("below 1e-8") &&
+                          Contains("lies 1e+07 from the origin") && Contains("move it nearer the origin"));
     // A mesh 2,000 across at the same distance is well within float resolution: no warning.
     std::ostringstream quiet;
     load_scene(write_file(dir, "near.obj", "v 10001000 0 0\nv 9999000 0 0\nv 10000000 1000 0\nv 10000000 0 1000\n"

@@ -1,10 +1,12 @@
 // Chapter 15's measurements (experiments.hpp): the spheres, the aimed rays, the escape count and the spawn test.
 #include "strahl/ch15/experiments.hpp"
+#include "strahl/camera.hpp"
 #include "strahl/ch15/spawn.hpp"
 #include "strahl/parallel.hpp"
 #include "strahl/procedural.hpp"
 #include "strahl/rng.hpp"
 #include "strahl/sampling.hpp"
+#include <algorithm>
 #include <cmath>
 
 namespace strahl::ch15 {
@@ -191,6 +193,60 @@ spawn_counts spawn_test(const accel& a, const triangle_mesh& m, const placement&
     spawn_counts total;
     for (const spawn_counts& c : per_chunk) total += c;
     return total;
+}
+
+std::vector<float> scale_steps(int lo_decade, int hi_decade) {
+    std::vector<float> out;
+    for (int d = lo_decade; d <= hi_decade; ++d)
+        out.push_back(std::ldexp(1.0f, int(std::lround(double(d) * std::log2(10.0)))));
+    return out;
+}
+
+triangle_mesh scaled(const triangle_mesh& m, float s) {
+    triangle_mesh out = m;
+    for (vec3& p : out.positions) p *= s;
+    return out;
+}
+
+std::vector<ray> scaled(std::span<const ray> rays, float s) {
+    std::vector<ray> out(rays.begin(), rays.end());
+    for (ray& r : out) r.org *= s, r.tmin *= s, r.tmax *= s;
+    return out;
+}
+
+std::vector<ray> scale_view_rays(int width, int height) {
+    const vec3 target(0.2f, 1.4f, 0.0f);
+    const float distance = 12.0f;
+    const camera cam(camera_desc{target + glm::normalize(vec3(0.3f, 0.4f, 1.0f)) * distance, target, vec3(0, 1, 0),
+                                 2.0f * glm::degrees(std::atan(2.5f / distance))},
+                     width, height);
+    std::vector<ray> rays;
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) rays.push_back(cam.pixel_ray(x, y));
+    return rays;
+}
+
+std::size_t count_hits(const accel& a, std::span<const ray> rays) {
+    constexpr std::size_t chunk = 64;
+    const std::size_t chunks = (rays.size() + chunk - 1) / chunk;
+    std::vector<std::size_t> per_chunk(chunks);
+    parallel_for_chunks(chunks, 1, [&](std::size_t c0, std::size_t c1) {
+        std::vector<hit> hits(chunk);
+        for (std::size_t c = c0; c < c1; ++c) {
+            const std::size_t first = c * chunk, n = std::min(chunk, rays.size() - first);
+            a.intersect(rays.subspan(first, n), std::span<hit>(hits.data(), n));
+            for (std::size_t i = 0; i < n; ++i) per_chunk[c] += hits[i].found();
+        }
+    });
+    std::size_t total = 0;
+    for (const std::size_t n : per_chunk) total += n;
+    return total;
+}
+
+float largest_side(const triangle_mesh& m) {
+    if (m.positions.empty()) return 0.0f;
+    const vec3 e = m.bounds().extent();
+    return std::max({e.x, e.y, e.z});
 }
 
 }  // namespace strahl::ch15

@@ -95,7 +95,8 @@ inline constexpr std::uint64_t max_flattened_triangles = 64u << 20;
 // non-finite or out-of-range number (a field is at most 1,024 x 1,024), an unknown or repeated mesh name, a
 // singular transform, a mesh that does not load, no instances, more than max_instances instances, more than
 // 2^32 - 2 triangles in all (both refused before the line's instances are made), a transformed coordinate
-// beyond max_coordinate.
+// beyond max_coordinate, an instance whose extent where it is placed (the largest side of its mesh's box,
+// transformed) is below min_extent (scene.hpp: the flattened copy would lose its hits).
 inline constexpr std::size_t max_instances = std::size_t(1) << 20;
 instanced_meshes load_instanced(const std::filesystem::path& file, std::ostream* log = nullptr,
                                 std::optional<std::array<float, 7>>* camera = nullptr);

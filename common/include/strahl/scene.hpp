@@ -110,8 +110,9 @@ public:
 // any vertex, beyond the last vertex; a glTF face assimp would drop), NaN or Inf in a referenced vertex, an
 // OBJ vertex line without three numbers or with a whole number of more than 64 bits, a polygon of more
 // than 1,000 corners, a glTF whose nodes nest more than 1,000 deep or form a cycle, a GLB whose lengths
-// exceed the file, a file assimp cannot read, a file with no triangles, and a coordinate beyond
-// max_coordinate.
+// exceed the file, a file assimp cannot read, a file with no triangles, a coordinate beyond max_coordinate,
+// and an extent (the largest side of the mesh's bounding box) below min_extent, a mesh that is one point
+// included.
 triangle_mesh load_mesh(const std::filesystem::path& file, std::ostream* log = nullptr);
 
 // The largest coordinate (in magnitude) the course accepts, in a scene or a ray file's origins and
@@ -119,6 +120,20 @@ triangle_mesh load_mesh(const std::filesystem::path& file, std::ostream* log = n
 // with edges and the origin's offset of about 7e12, that product passes float's largest value, 3.4e38,
 // and every hit is lost. Within +-1e12 the largest product stays below 5e37.
 inline constexpr float max_coordinate = 1e12f;
+
+// The smallest extent the course accepts: the largest side of a mesh's bounding box, and of each instance of
+// a scene file where it is placed. The triangle tests multiply three lengths the other way too: Moeller-
+// Trumbore's t numerator e2 . ((org - v0) x e1) and the watertight test's T are about a^2 b for a triangle of
+// edge a seen from a distance b. Below float's smallest normal number, 2^-126 (1.2e-38), such a product
+// loses digits, becomes 0 where denormals are flushed (Embree's kernels run so), and below 2^-150 becomes 0
+// in every test: t = 0, and the hit is lost. At 1e-8, a triangle as small as float resolves in the scene
+// (edges of 2^-20 of its extent) seen from the scene's size keeps a^2 b near 1e-36, 77 times 2^-126. Chapter 15 measures the edges: the teapot (its triangles about 1e-2 of its extent) loses hits
+// in Embree below an extent of about 6e-12 and in the course's float tests below about 5e-14.
+inline constexpr float min_extent = 1e-8f;
+
+// The refusal of an extent below min_extent, as load_mesh and load_instanced word it: "is 5e-12 across (the
+// largest side of its bounding box), below 1e-8, ...: scale the scene up".
+std::string below_min_extent(float extent);
 
 // load_mesh plus what a render needs: one diffuse material, a camera framing the mesh from the front
 // (+z looking at -z) and a point light near the camera. Meshes whose front view says little have a view

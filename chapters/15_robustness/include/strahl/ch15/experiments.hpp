@@ -78,4 +78,21 @@ struct spawn_counts {
 spawn_counts spawn_test(const accel& a, const triangle_mesh& m, const placement& p, offset_kind k,
                         std::size_t points, bool inward, std::uint64_t seed, progress_bar* bar);
 
+// The small and the large extreme: a scene and its rays scaled about the origin by s, a power of two.
+// Multiplying by a power of two changes no rounding while the results are normal floats (2^-126 to 2^128),
+// so every hit the tests lose on a scaled copy is lost to underflow or overflow, never to rounding: a
+// vertex p becomes s p, a ray's origin s org, its direction is kept (unit length, as the camera makes it),
+// and a hit's t becomes s t. scale_steps(lo, hi): the power of two nearest 10^d for each decade d in
+// [lo, hi] (2^-100 for 1e-30, 2^40 for 1e12).
+std::vector<float> scale_steps(int lo_decade, int hi_decade);
+triangle_mesh scaled(const triangle_mesh& m, float s);
+std::vector<ray> scaled(std::span<const ray> rays, float s);
+// The scale experiment's view: the teapot's primary rays, width x height, from 12 units along
+// normalize(0.3, 0.4, 1) from (0.2, 1.4, 0), the field of view framing 2.5 units above and below.
+std::vector<ray> scale_view_rays(int width, int height);
+// How many of the rays find a hit through a's closest-hit query, in chunks of 64 on TBB's threads.
+std::size_t count_hits(const accel& a, std::span<const ray> rays);
+// The largest side of a mesh's bounding box (0 for an empty mesh): the extent scene.hpp's min_extent bounds.
+float largest_side(const triangle_mesh& m);
+
 }  // namespace strahl::ch15
