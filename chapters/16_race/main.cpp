@@ -203,6 +203,7 @@ int run(int argc, const char* const* argv) {
                  "the race's " + std::to_string(w) + " x " + std::to_string(h) + " ray sets");
     std::vector<std::pair<std::string, std::string>> compare;
     if (args.has("compare")) {
+        const std::vector<std::string> listed = args.has("accels") ? split(args.get("accels")) : std::vector<std::string>{};
         for (const std::string& pair : split(args.get("compare"))) {
             const std::size_t colon = pair.find(':');
             if (colon == std::string::npos || colon == 0 || colon + 1 == pair.size() ||
@@ -210,7 +211,6 @@ int run(int argc, const char* const* argv) {
                 throw usage_error("--compare takes pairs of rows A:B, comma-separated (not '" + pair + "')");
             compare.emplace_back(pair.substr(0, colon), pair.substr(colon + 1));
             // Rows the race will have: among --accels, or registered (strahl-trace --list).
-            const std::vector<std::string> listed = args.has("accels") ? split(args.get("accels")) : std::vector<std::string>{};
             for (const std::string& name : {compare.back().first, compare.back().second}) {
                 bool known = args.has("accels") ? std::find(listed.begin(), listed.end(), name) != listed.end() : true;
                 if (!args.has("accels")) try {

@@ -192,7 +192,7 @@ TEST_CASE("ch12 packets: a child the frustum says every lane enters, every lane 
         for (int i = 0; i < 16; ++i) t0_hi = std::max(t0_hi, p->t0[i]), t1_lo = std::min(t1_lo, p->t1[i]);
         simd::vfloat<8> entry;
         unsigned all = 0;
-        const unsigned maybe = frustum_children(*p, n, entry, t0_hi, t1_lo, all);
+        const unsigned maybe = frustum_children<true>(*p, n, entry, t0_hi, t1_lo, &all);
         candidates += std::popcount(maybe), covered += std::popcount(all);
         for (int c = 4; c < 8; ++c) {
             int others = 0;

@@ -21,34 +21,15 @@ namespace strahl::ch12 {
 
 // The frustum against the N boxes of node n: exercise 12.2's bounds with lanes being the children. Returns
 // the children the frustum may enter and, in `entry`, a lower bound of any ray's entry into each.
-template <int N, int K, int V>
+// With Cover, the same bounds the other way round too: the children every ray of the packet surely enters.
+// A lane's computed entry on axis a is at most the largest of the four products plus the margin, its exit at
+// least the smallest less it; so where the largest entry bound (and t0_hi, the lanes' largest t0) lies at or
+// below the smallest exit bound (and t1_lo, their smallest t1), each lane's own test would say it enters.
+// `covered` receives those children (a subset of the candidates).
+template <bool Cover = false, int N, int K, int V>
 [[gnu::always_inline]] inline unsigned frustum_children(const ray_packet<K, V>& p, const ch13::wide_node<N>& n,
-                                                        simd::vfloat<N>& entry) {
-    using vf = simd::vfloat<N>;
-    vf lo(p.t0_lo), hi(p.t1_hi);
-    for (int a = 0; a < 3; ++a) {
-        const bool down = (p.octant >> a) & 1;
-        const vf near = vf::load(down ? n.hi[a] : n.lo[a]), far = vf::load(down ? n.lo[a] : n.hi[a]);
-        const vf ilo(p.inv_lo[a]), ihi(p.inv_hi[a]), olo(p.org_lo[a]), ohi(p.org_hi[a]), m(p.margin[a]);
-        const vf n1 = near - ohi, n2 = near - olo, f1 = far - ohi, f2 = far - olo;
-        const vf near_t = simd::min(simd::min(n1 * ilo, n1 * ihi), simd::min(n2 * ilo, n2 * ihi)) - m;
-        const vf far_t = simd::max(simd::max(f1 * ilo, f1 * ihi), simd::max(f2 * ilo, f2 * ihi)) + m;
-        lo = simd::max(lo, near_t);
-        hi = simd::min(hi, far_t);
-    }
-    entry = lo;
-    return simd::movemask(lo <= hi);
-}
-
-// The same bounds the other way round: the children that every ray of the packet surely enters. A lane's
-// computed entry on axis a is at most the largest of the four products plus the margin, its exit at least
-// the smallest less it; so where the largest entry bound (and t0_hi, the lanes' largest t0) lies at or below
-// the smallest exit bound (and t1_lo, their smallest t1), each lane's own test would say it enters. Returns
-// the candidates as frustum_children does; `covered` receives those surely entered by every lane.
-template <int N, int K, int V>
-[[gnu::always_inline]] inline unsigned frustum_children(const ray_packet<K, V>& p, const ch13::wide_node<N>& n,
-                                                        simd::vfloat<N>& entry, float t0_hi, float t1_lo,
-                                                        unsigned& covered) {
+                                                        simd::vfloat<N>& entry, float t0_hi = 0.0f,
+                                                        float t1_lo = 0.0f, unsigned* covered = nullptr) {
     using vf = simd::vfloat<N>;
     vf lo(p.t0_lo), hi(p.t1_hi), all_lo(t0_hi), all_hi(t1_lo);
     for (int a = 0; a < 3; ++a) {
@@ -60,12 +41,14 @@ template <int N, int K, int V>
         const vf b1 = f1 * ilo, b2 = f1 * ihi, b3 = f2 * ilo, b4 = f2 * ihi;
         lo = simd::max(lo, simd::min(simd::min(a1, a2), simd::min(a3, a4)) - m);
         hi = simd::min(hi, simd::max(simd::max(b1, b2), simd::max(b3, b4)) + m);
-        all_lo = simd::max(all_lo, simd::max(simd::max(a1, a2), simd::max(a3, a4)) + m);
-        all_hi = simd::min(all_hi, simd::min(simd::min(b1, b2), simd::min(b3, b4)) - m);
+        if constexpr (Cover) {
+            all_lo = simd::max(all_lo, simd::max(simd::max(a1, a2), simd::max(a3, a4)) + m);
+            all_hi = simd::min(all_hi, simd::min(simd::min(b1, b2), simd::min(b3, b4)) - m);
+        }
     }
     entry = lo;
     const unsigned candidates = simd::movemask(lo <= hi);
-    covered = simd::movemask(all_lo <= all_hi) & candidates;
+    if constexpr (Cover) *covered = simd::movemask(all_lo <= all_hi) & candidates;
     return candidates;
 }
 

@@ -76,7 +76,7 @@ void wide_packet_walk(const ch13::wide_bvh<N, M>& tree, ray_packet<K, 1>& p, Sta
             alignas(64) float bounds[N];
             if constexpr (Coherent) {
                 simd::vfloat<N> bound;
-                candidates = frustum_children(p, n, bound, t0_hi, t1_lo, covered);
+                candidates = frustum_children<true>(p, n, bound, t0_hi, t1_lo, &covered);
                 bound.store(bounds);
             }
             for (unsigned rest = candidates; rest != 0; rest &= rest - 1) {
