@@ -2,17 +2,28 @@
 // file read, and refused with the file, the line and the reason for each malformed line.
 #include "strahl/instancing.hpp"
 #include "strahl/procedural.hpp"
+#include "test_support.hpp"
 #include <catch2/catch.hpp>
 #include <filesystem>
 #include <fstream>
+#include <unistd.h>
 
 using namespace strahl;
 namespace fs = std::filesystem;
 
 namespace {
+// ctest runs each test case as its own process, in parallel: one folder per process, so that two cases
+// never write the same bad.scene at once.
+struct process_dir {
+    fs::path path = test::scratch_dir("instancing_" + std::to_string(::getpid()));
+    ~process_dir() {
+        std::error_code ec;
+        fs::remove_all(path, ec);
+    }
+};
 fs::path write_file(const std::string& name, const std::string& text) {
-    const fs::path dir = fs::temp_directory_path() / "strahl_test_instancing";
-    fs::create_directories(dir);
+    static const process_dir scratch;
+    const fs::path& dir = scratch.path;
     std::ofstream(dir / name) << text;
     return dir / name;
 }
