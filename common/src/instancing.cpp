@@ -158,7 +158,7 @@ void add_field(instanced_meshes& out, std::uint32_t mesh, int nx, int nz, float 
 struct line_reader {
     const std::filesystem::path& file;
     int number = 0;
-    std::vector<std::string> words;
+    std::vector<std::string> words{};
     std::size_t next = 1;
 
     [[noreturn]] void fail(const std::string& what) const {

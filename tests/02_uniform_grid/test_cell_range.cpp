@@ -1,19 +1,13 @@
 // Exercise 02.1 cell range (5 points). Only cells_of_box is used here, on grids made by hand.
+#include "grid_cases.hpp"
 #include "strahl/ch02/grid.hpp"
 #include <catch2/catch.hpp>
 
 using namespace strahl;
 using namespace strahl::ch02;
+using strahl::ch02::cases::make_grid;
 
 namespace {
-grid_dims make_grid(vec3 lo, vec3 hi, ivec3 res) {
-    grid_dims g;
-    g.box = aabb{lo, hi};
-    g.res = res;
-    g.cell_size = (hi - lo) / vec3(res);
-    g.inv_cell_size = vec3(res) / (hi - lo);
-    return g;
-}
 bool same(const cell_range& r, ivec3 lo, ivec3 hi) { return r.lo == lo && r.hi == hi; }
 }  // namespace
 

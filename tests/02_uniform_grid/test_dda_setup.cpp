@@ -1,20 +1,12 @@
 // Exercise 02.2 DDA set-up (6 points). Only dda_setup is used here, on grids and entry points made by hand.
+#include "grid_cases.hpp"
 #include "strahl/ch02/grid.hpp"
 #include <catch2/catch.hpp>
 
 using namespace strahl;
 using namespace strahl::ch02;
+using strahl::ch02::cases::make_grid;
 
-namespace {
-grid_dims make_grid(vec3 lo, vec3 hi, ivec3 res) {
-    grid_dims g;
-    g.box = aabb{lo, hi};
-    g.res = res;
-    g.cell_size = (hi - lo) / vec3(res);
-    g.inv_cell_size = vec3(res) / (hi - lo);
-    return g;
-}
-}  // namespace
 
 TEST_CASE("02.2 DDA set-up: a ray with positive direction enters from outside", "[ch02][pts:2]") {
     const grid_dims g = make_grid(vec3(0), vec3(4), ivec3(4));

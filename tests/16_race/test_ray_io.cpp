@@ -16,7 +16,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr float nan_f = std::numeric_limits<float>::quiet_NaN();
+constexpr float quiet_nan = std::numeric_limits<float>::quiet_NaN();
 
 bool same_bits(float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
@@ -245,8 +245,8 @@ TEST_CASE("ch16 ray_io: NaN and infinities in rays are refused, naming ray and f
         const char* name;
     };
     const bad_field cases[] = {
-        {0, 0, nan_f, "ox"},  {1, 1, nan_f, "oy"},  {2, 2, nan_f, "oz"},   {0, 3, nan_f, "tmin"},
-        {1, 4, nan_f, "dx"},  {2, 5, nan_f, "dy"},  {3, 6, nan_f, "dz"},   {2, 7, nan_f, "tmax"},
+        {0, 0, quiet_nan, "ox"},  {1, 1, quiet_nan, "oy"},  {2, 2, quiet_nan, "oz"},   {0, 3, quiet_nan, "tmin"},
+        {1, 4, quiet_nan, "dx"},  {2, 5, quiet_nan, "dy"},  {3, 6, quiet_nan, "dz"},   {2, 7, quiet_nan, "tmax"},
         {3, 7, -inf, "tmax"}, {1, 0, inf, "ox"},    {2, 1, -inf, "oy"},    {0, 2, inf, "oz"},
         {1, 3, inf, "tmin"},  {0, 3, -inf, "tmin"}, {2, 4, inf, "dx"},     {3, 6, -inf, "dz"},
     };
@@ -295,7 +295,7 @@ TEST_CASE("ch16 ray_io: inconsistent or NaN hits are refused", "[ch16][ray_io]")
         for (int field : {0, 2, 3}) {
             INFO("field " << field);
             fresh();
-            patch_float(dir / "bad.bin", 16 + 16 * 3 + 4 * std::size_t(field), nan_f);
+            patch_float(dir / "bad.bin", 16 + 16 * 3 + 4 * std::size_t(field), quiet_nan);
             refused(read_h, dir / "bad.bin", {"bad.bin", "hit 3", "NaN"});
         }
     }
