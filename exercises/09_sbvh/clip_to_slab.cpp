@@ -1,4 +1,4 @@
-// Exercise 09.1 clip a triangle to a slab (5 points). Read: clip.hpp; M. Stich, H. Friedrich and
+// Exercise 09.1 clip a triangle to a slab (6 points). Read: clip.hpp; M. Stich, H. Friedrich and
 // A. Dietrich, "Spatial splits in bounding volume hierarchies", HPG 2009, section 3.
 #include "strahl/ch09/clip.hpp"
 #include "strahl/todo.hpp"

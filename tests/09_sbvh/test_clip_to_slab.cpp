@@ -1,7 +1,9 @@
-// Exercise 09.1 clip a triangle to a slab (5 points): hand-computed parts (a right triangle and a tilted
+// Exercise 09.1 clip a triangle to a slab (6 points): hand-computed parts (a right triangle and a tilted
 // one, slabs inside, across, beside and open-ended), the intersection with the reference's box, corners
 // on the planes and degenerate triangles, and random triangles and slabs against a plain clipper in long
-// double: the box holds the exact part and is no larger than rounding allows.
+// double: the box holds the exact part and is no larger than rounding allows; and crossing points that
+// float rounds to nearest on the wrong side (0.1, 0.7), and the random cases again with no tolerance: the box
+// rounded outwards holds the exact part.
 #include "strahl/ch09/clip.hpp"
 #include "clip_reference.hpp"
 #include <catch2/catch.hpp>
@@ -96,5 +98,52 @@ TEST_CASE("09.1 clip: random triangles and slabs hold the exact part, and barely
         if (!ok && ++wrong <= 3) FAIL_CHECK("triangle " << i << " on axis " << axis << ": the box is wrong");
     }
     CHECK(wrong == 0);
+    CHECK(nonempty > 1000);
+}
+
+TEST_CASE("09.1 clip: the box holds the exact part, rounded outwards, not to nearest", "[ch09][pts:1]") {
+    // Crossing points at y = 0.1 (float(0.1) lies above it) and y = 0.7 (float(0.7) lies below it): rounded
+    // to nearest, the box would miss a sliver of the part (0.1 to float(0.1), float(0.7) to 0.7), and a ray
+    // through it would lose its hit. Rounded outwards, the box takes the float on the far side of each.
+    const float below_tenth = 0x1.999998p-4f, above_seven_tenths = 0x1.666668p-1f;
+    REQUIRE((double(0.1f) > 0.1 && double(below_tenth) < 0.1));       // the rounding the case relies on
+    REQUIRE((double(0.7f) < 0.7 && double(above_seven_tenths) > 0.7));
+    // The same two cases on every axis: the corners' coordinates turned by `axis` places.
+    for (int axis = 0; axis < 3; ++axis) {
+        const auto turn = [&](vec3 p) {
+            vec3 q;
+            for (int a = 0; a < 3; ++a) q[(a + axis) % 3] = p[a];
+            return q;
+        };
+        INFO("clipped on axis " << axis);
+        // (0,0,0), (10,1,0), (0,1,0) for 1 <= x <= 10: corners (1,0.1,0), (10,1,0), (1,1,0).
+        const triangle low{turn(vec3(0, 0, 0)), turn(vec3(10, 1, 0)), turn(vec3(0, 1, 0))};
+        check_box(clip_to_slab(low, axis, 1, 10, everything), turn(vec3(1, below_tenth, 0)), turn(vec3(10, 1, 0)));
+        // (0,0,0), (10,0,7), (10,0,0) for 0 <= x <= 1: corners (0,0,0), (1,0,0.7), (1,0,0).
+        const triangle high{turn(vec3(0, 0, 0)), turn(vec3(10, 0, 7)), turn(vec3(10, 0, 0))};
+        check_box(clip_to_slab(high, axis, 0, 1, everything), turn(vec3(0, 0, 0)), turn(vec3(1, 0, above_seven_tenths)));
+    }
+    // Random triangles and slabs: the box holds the exact part (a clipper in long double), with no
+    // tolerance at all, on every axis, at every scale.
+    pcg32 g(91);
+    std::size_t lost = 0, nonempty = 0;
+    for (int i = 0; i < 3000; ++i) {
+        const float scale = i % 3 == 0 ? 1e6f : i % 3 == 1 ? 1.0f : 1e-3f;
+        const triangle t = test::random_triangle(g, -scale, scale);
+        const int axis = (i / 3) % 3;
+        float lo = (g.next_float() * 2 - 1) * scale, hi = (g.next_float() * 2 - 1) * scale;
+        if (lo > hi) std::swap(lo, hi);
+        const test::exact_box want = test::exact_clip(t, axis, lo, hi, everything);
+        if (want.empty) continue;
+        ++nonempty;
+        const aabb got = clip_to_slab(t, axis, lo, hi, everything);
+        bool holds = !got.is_empty();
+        for (int a = 0; a < 3 && holds; ++a) holds = got.min[a] <= want.min[a] && got.max[a] >= want.max[a];
+        if (!holds && ++lost <= 3)
+            FAIL_CHECK(std::hexfloat << "triangle " << i << " on axis " << axis << ": [" << got.min.x << " " << got.min.y
+                                     << " " << got.min.z << "] - [" << got.max.x << " " << got.max.y << " "
+                                     << got.max.z << "] misses part of the exact part");
+    }
+    CHECK(lost == 0);
     CHECK(nonempty > 1000);
 }
