@@ -1,5 +1,5 @@
 // Exercises 15.1 (the permutation and the shear, 3 points) and 15.2 (the edge functions with the double
-// fallback, 4 points). Read: S. Woop, C. Benthin and I. Wald, "Watertight ray/triangle intersection",
+// fallback, 5 points). Read: S. Woop, C. Benthin and I. Wald, "Watertight ray/triangle intersection",
 // JCGT 2(1), 2013, sections 3 and 4 (its figure 7 is the whole test).
 #include "strahl/ch15/watertight.hpp"
 #include "strahl/todo.hpp"

@@ -162,6 +162,28 @@ TEST_CASE("15.2 watertight test: the double fallback decides edge functions that
     CHECK(t == 1.0f);
 }
 
+TEST_CASE("15.2 watertight test: no hit on a triangle whose edges are parallel in float (pbrt-v4's case)",
+          "[ch15][pts:1]") {
+    // pbrt-v4's shapes_test.cpp, Triangle.BadCases: three collinear corners (equal x and z) and a ray that
+    // once reported a hit on it (tmax 0.9999). Sheared and rounded, the corners span a tiny area, the three
+    // edge functions agree in sign and det is not 0: only step c's check of (v1 - v0) x (v2 - v0) == 0
+    // refuses the hit.
+    const vec3 v0(-1113.45459f, -79.049614f, -56.2431908f), v1(-1113.45459f, -87.0922699f, -56.2431908f),
+        v2(-1113.45459f, -79.2090149f, -56.2431908f);
+    REQUIRE(glm::cross(v1 - v0, v2 - v0) == vec3(0.0f));  // parallel in float
+    const ray r{vec3(-1081.47925f, 99.9999542f, 87.7701111f), vec3(-32.1072998f, -183.355865f, -144.607635f), 0.0f,
+                0.9999f};
+    float t = -1.0f, u = -1.0f, v = -1.0f;
+    CHECK_FALSE(intersect_watertight(r, make_shear(r.dir), v0, v1, v2, t, u, v));
+    CHECK_FALSE(intersect_watertight(r, make_shear(r.dir), v1, v2, v0, t, u, v));  // every corner first
+    CHECK_FALSE(intersect_watertight(r, make_shear(r.dir), v2, v0, v1, t, u, v));
+    CHECK_FALSE(intersect_watertight(r, make_shear(r.dir), v0, v2, v1, t, u, v));  // and the other winding
+    // A triangle beside it that is not degenerate is still hit: the check refuses parallel edges only.
+    const vec3 w2 = v2 + vec3(0.0f, 0.0f, 1.0f);
+    const ray through{(v0 + v1 + w2) / 3.0f + vec3(10.0f, 0.0f, 0.0f), vec3(-1.0f, 0.0f, 0.0f), 0.0f, inf};
+    CHECK(intersect_watertight(through, make_shear(through.dir), v0, v1, w2, t, u, v));
+}
+
 TEST_CASE("15.3 offset_integer: moved by ulps along the normal, to the side the ray leaves to", "[ch15][pts:3]") {
     const vec3 n(0, 0, 1);
     // Near the origin, a float offset of 2^-16 n.
