@@ -327,7 +327,7 @@ TEST_CASE("simd: comparisons follow IEEE (NaN compares false, except for !=)", "
     });
 }
 
-TEST_CASE("simd: masks: and, or, xor, not, andnot, movemask, any, all, none, popcount", "[common][simd]") {
+TEST_CASE("simd: masks: and, or, xor, not, andnot, movemask and its inverse from_bits, any, all, none, popcount", "[common][simd]") {
     for_each_backend([]<class V>(std::type_identity<V>) {
         using M = typename kin<V>::vm;
         constexpr int N = V::size;
@@ -381,6 +381,12 @@ TEST_CASE("simd: masks: and, or, xor, not, andnot, movemask, any, all, none, pop
             }
             const M m = V::load(x) != V(0.0f);
             CHECK(movemask(m) == want);
+            // from_bits, movemask's inverse (the bits above lane N - 1 ignored).
+            M back;
+            if constexpr (std::is_same_v<M, simd::vmask<N>>) back = simd::from_bits<N>(want | ~simd::detail::lane_bits(N));
+            else back = simd::from_bits_generic<N>(want | ~simd::detail::lane_bits(N));
+            CHECK(movemask(back) == want);
+            CHECK(movemask(back & m) == want);
             CHECK(popcount(m) == std::popcount(want));
             CHECK(any(m) == (want != 0));
             CHECK(none(m) == (want == 0));

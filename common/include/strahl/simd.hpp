@@ -205,6 +205,8 @@ template <int N> generic_vmask<N> operator|(generic_vmask<N> a, generic_vmask<N>
 template <int N> generic_vmask<N> operator^(generic_vmask<N> a, generic_vmask<N> b) { a.bits ^= b.bits; return a; }
 template <int N> generic_vmask<N> operator~(generic_vmask<N> a) { a.bits ^= detail::lane_bits(N); return a; }
 template <int N> unsigned movemask(generic_vmask<N> a) { return a.bits; }
+// movemask's inverse: lane i true where bit i of b is set (bits from N on ignored).
+template <int N> generic_vmask<N> from_bits_generic(unsigned b) { generic_vmask<N> r; r.bits = b & detail::lane_bits(N); return r; }
 
 // Integer lanes: + and - wrap around (two's complement) as the hardware does; comparisons are signed.
 template <int N> generic_vint<N> operator+(generic_vint<N> a, generic_vint<N> b) {
@@ -318,6 +320,10 @@ inline mask4 operator|(mask4 a, mask4 b) { return _mm_or_ps(a.m, b.m); }
 inline mask4 operator^(mask4 a, mask4 b) { return _mm_xor_ps(a.m, b.m); }
 inline mask4 operator~(mask4 a) { return _mm_xor_ps(a.m, mask4(true).m); }
 inline unsigned movemask(mask4 a) { return unsigned(_mm_movemask_ps(a.m)); }
+inline mask4 from_bits4(unsigned b) {
+    const __m128i bit = _mm_setr_epi32(1, 2, 4, 8);
+    return _mm_castsi128_ps(_mm_cmpeq_epi32(_mm_and_si128(_mm_set1_epi32(int(b)), bit), bit));
+}
 
 inline int4 operator+(int4 a, int4 b) { return _mm_add_epi32(a.m, b.m); }
 inline int4 operator-(int4 a, int4 b) { return _mm_sub_epi32(a.m, b.m); }
@@ -427,6 +433,11 @@ inline mask8 operator|(mask8 a, mask8 b) { return _mm256_or_ps(a.m, b.m); }
 inline mask8 operator^(mask8 a, mask8 b) { return _mm256_xor_ps(a.m, b.m); }
 inline mask8 operator~(mask8 a) { return _mm256_xor_ps(a.m, mask8(true).m); }
 inline unsigned movemask(mask8 a) { return unsigned(_mm256_movemask_ps(a.m)); }
+inline mask8 from_bits8(unsigned b) {
+    const __m256i bit = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
+    const __m256 set = _mm256_and_ps(_mm256_castsi256_ps(_mm256_set1_epi32(int(b))), _mm256_castsi256_ps(bit));
+    return _mm256_castsi256_ps(detail::cmpeq32(_mm256_castps_si256(set), bit));
+}
 
 inline int8 operator+(int8 a, int8 b) { return detail::add32(a.m, b.m); }
 inline int8 operator-(int8 a, int8 b) { return detail::sub32(a.m, b.m); }
@@ -512,6 +523,7 @@ inline mask16 operator|(mask16 a, mask16 b) { return mask16(__mmask16(a.m | b.m)
 inline mask16 operator^(mask16 a, mask16 b) { return mask16(__mmask16(a.m ^ b.m)); }
 inline mask16 operator~(mask16 a) { return mask16(__mmask16(~a.m)); }
 inline unsigned movemask(mask16 a) { return a.m; }
+inline mask16 from_bits16(unsigned b) { return mask16(__mmask16(b)); }
 
 inline int16 operator+(int16 a, int16 b) { return _mm512_add_epi32(a.m, b.m); }
 inline int16 operator-(int16 a, int16 b) { return _mm512_sub_epi32(a.m, b.m); }
@@ -541,6 +553,19 @@ template <int N, bool B> vint<N, B> select(vmask<N, B> m, vint<N, B> a, vint<N, 
 }
 // a & ~b (note: Intel's _mm_andnot_ps(a, b) is ~a & b).
 template <int N, bool B> vmask<N, B> andnot(vmask<N, B> a, vmask<N, B> b) { return a & ~b; }
+// movemask's inverse: the mask of N lanes whose lane i is bit i of b.
+template <int N> vmask<N> from_bits(unsigned b) {
+    if constexpr (!native<N>) return from_bits_generic<N>(b);
+#if defined(__SSE2__)
+    else if constexpr (N == 4) return from_bits4(b);
+#endif
+#if defined(__AVX__)
+    else if constexpr (N == 8) return from_bits8(b);
+#endif
+#if defined(__AVX512F__)
+    else if constexpr (N == 16) return from_bits16(b);
+#endif
+}
 template <int N, bool B> bool any(vmask<N, B> m) { return movemask(m) != 0; }
 template <int N, bool B> bool all(vmask<N, B> m) { return movemask(m) == detail::lane_bits(N); }
 template <int N, bool B> bool none(vmask<N, B> m) { return movemask(m) == 0; }

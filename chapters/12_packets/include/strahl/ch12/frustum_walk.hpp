@@ -63,7 +63,7 @@ void frustum_walk(const ch13::wide_bvh<N, M>& tree, ray_packet<K, V>& p, Stats& 
         float t;
         const float* box;  // the leaf's box: lo[0][k] of its parent's slot (the other planes N floats apart)
     };
-    entry stack[ch04::bvh_max_depth * (N - 1) + 2];
+    entry stack[ch04::bvh_max_depth * (N - 1) + N + 1];  // (a node's children are sorted on top of it)
     int top = 0;
     if (tree.nodes.empty() && !ch13::is_leaf(tree.root_ref)) return;
     float root_box[6 * N];  // the whole tree's box in a slot's layout, for a root that is a leaf
@@ -79,23 +79,22 @@ void frustum_walk(const ch13::wide_bvh<N, M>& tree, ray_packet<K, V>& p, Stats& 
             if (bits != 0) {
                 alignas(64) float ts[N];
                 t.store(ts);
-                entry hits[N];
-                int count = 0;
-                for (; bits != 0; bits &= bits - 1) {
+                // Sorted in place on top of the stack (farthest first), the nearest then taken off again.
+                entry* hits = stack + top;
+                const int count = std::popcount(bits);
+                for (int k = 0; bits != 0; bits &= bits - 1, ++k) {
                     const int c = std::countr_zero(bits);
                     const entry h{n.child[c], ts[c], &n.lo[0][c]};
-                    int j = count++;
-                    if constexpr (Nearest)
-                        for (; j > 0 && hits[j - 1].t <= h.t; --j) hits[j] = hits[j - 1];  // farthest first
-                    hits[j] = h;
+                    if constexpr (Nearest) {
+                        int j = k;
+                        for (; j > 0 && hits[j - 1].t <= h.t; --j) hits[j] = hits[j - 1];
+                        hits[j] = h;
+                    } else {
+                        hits[count - 1 - k] = h;  // stored order: the first child on top
+                    }
                 }
-                if constexpr (Nearest) {
-                    for (int j = 0; j + 1 < count; ++j) stack[top++] = hits[j];
-                    e = hits[count - 1];
-                } else {
-                    for (int j = count - 1; j > 0; --j) stack[top++] = hits[j];
-                    e = hits[0];
-                }
+                top += count - 1;
+                e = stack[top];
                 continue;
             }
         } else {

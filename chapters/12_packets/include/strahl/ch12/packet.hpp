@@ -71,6 +71,8 @@ struct alignas(64) ray_packet {
     alignas(64) float tmin[size], tmax[size], slack[size], t0[size], t1[size];
     std::uint32_t ray_index[size];  // the ray's place in the batch
     hit best[size];                 // closest hit so far
+    alignas(64) float best_t[size], best_u[size], best_w[size];  // the same, lanes side by side (frustum walk)
+    alignas(64) std::int32_t best_id[size];
     unsigned active[V];             // lane bits per vector
     int octant = 0;                 // the sign bits of every active lane, where they all agree ...
     bool coherent = true;           // ... which is when the whole packet can choose near planes once
@@ -110,6 +112,7 @@ struct alignas(64) ray_packet {
             tmin[lane] = r.tmin, tmax[lane] = r.tmax;
             ray_index[lane] = ids[lane];
             best[lane] = hit{};
+            best_t[lane] = inf, best_id[lane] = std::int32_t(invalid_id), best_u[lane] = 0.0f, best_w[lane] = 0.0f;
         }
         for (int v = 0; v < V; ++v) {
             const int n = std::clamp(count - v * K, 0, K);
@@ -346,6 +349,29 @@ template <int K, int V, class At>
         p.tmax[i] = next_up(ts[j]);
         p.t1[i] = p.tmax[i] + p.slack[i];
     }
+}
+
+// packet_record on the lanes `win` of vector v, K at a time, into the lanes-side-by-side best hit.
+// Signed id comparison: at equal t, best holds a hit (t < inf), so its id is below 2^31 as every triangle's.
+template <int K, int V>
+[[gnu::always_inline]] inline void packet_record_lanes(ray_packet<K, V>& p, int v, simd::vmask<K> win,
+                                                       std::uint32_t id, simd::vfloat<K> t, simd::vfloat<K> u,
+                                                       simd::vfloat<K> w) {
+    using vf = simd::vfloat<K>;
+    using vi = simd::vint<K>;
+    const int at = v * K;
+    const vf bt = vf::load(p.best_t + at);
+    const vi bid = vi::load(p.best_id + at), idv{std::int32_t(id)};
+    win = win & ((t < bt) | ((t == bt) & (idv < bid)));
+    simd::select(win, t, bt).store(p.best_t + at);
+    simd::select(win, idv, bid).store(p.best_id + at);
+    simd::select(win, u, vf::load(p.best_u + at)).store(p.best_u + at);
+    simd::select(win, w, vf::load(p.best_w + at)).store(p.best_w + at);
+    const vi b = simd::as_int(t);
+    const vi up = simd::select(t == vf(0.0f), vi(1), simd::select(b < vi(0), b - vi(1), b + vi(1)));
+    const vf tmax = simd::select(win, simd::as_float(up), vf::load(p.tmax + at));
+    tmax.store(p.tmax + at);
+    simd::select(win, tmax + vf::load(p.slack + at), vf::load(p.t1 + at)).store(p.t1 + at);
 }
 
 }  // namespace strahl::ch12

@@ -61,7 +61,10 @@ class packet_accel final : public packet_accel_base {
     static constexpr bool wide_tree = W == walk_kind::wide || W == walk_kind::frustum;
     // The wide tree's leaves: blocks of this many triangles (the packet tests them one by one; the block size
     // sets how many the optimal collapse may gather into a leaf).
-    static constexpr int wide_block = 8;
+        static constexpr int wide_block = 8;
+    // Walks over vectors of the packet in place record closest hits K lanes at a time (packet_record_lanes);
+    // chapter 14's hand-off and the gathered lanes of the partition walk keep `best`, one lane at a time.
+    static constexpr bool soa_best = W == walk_kind::frustum || (W == walk_kind::wide && !Policy::departures);
 
 public:
     packet_accel(std::string name, const packet_config& c, Policy policy = {})
@@ -209,6 +212,8 @@ private:
                 if (!((held[k / K] >> (k % K)) & 1u)) continue;
                 const std::uint32_t i = p->ray_index[k];
                 if constexpr (Any) blocked[i] = p->best[k].found() ? 1 : 0;
+                else if constexpr (soa_best)
+                    hits[i] = hit{p->best_t[k], std::uint32_t(p->best_id[k]), p->best_u[k], p->best_w[k], invalid_id};
                 else hits[i] = p->best[k];
                 if (!per_ray) continue;
                 if constexpr (!Policy::departures || !requires { stats.left_at; }) {
@@ -243,6 +248,8 @@ private:
                 p.best[i].prim = id;
             }
             lanes &= ~b;
+        } else if constexpr (soa_best) {
+            packet_record_lanes(p, at(0) / K, simd::from_bits<K>(b), id, t, u, w);
         } else {
             packet_record(p, b, at, id, t, u, w);
         }
