@@ -24,4 +24,9 @@ std::unique_ptr<bvh_accel_base> make_bvh_accel(bool virtual_primitives, const bv
 using bvh_builder = std::function<bvh(std::span<const aabb> boxes, std::span<const vec3> centroids)>;
 std::unique_ptr<bvh_accel_base> make_bvh_accel(bool virtual_primitives, std::string name, bvh_builder builder);
 
+// A builder that needs the triangles themselves, not only their boxes (chapter 09's SBVH splits them):
+// builder(mesh) gives the tree, whose leaves may reference a triangle more than once. bvh_accel_t
+// (bvh_accel.hpp) takes one over plain triangles; chapter 13 collapses its tree into wide nodes.
+using mesh_bvh_builder = std::function<bvh(const triangle_mesh& mesh)>;
+
 }  // namespace strahl::ch04

@@ -15,11 +15,15 @@ namespace strahl::ch04 {
 //   template <class Stats, class Leaf> void operator()(const bvh&, ray& r, Stats&, Leaf&& leaf) const;
 // which calls leaf(first, count) for the leaves r reaches (prim_ids[first, first + count)) and stops when
 // leaf returns true.
-template <class Set, class Walk>
-class bvh_accel_t final : public per_ray_accel<bvh_accel_t<Set, Walk>, bvh_accel_base> {
+// Base: bvh_accel_base, or an interface derived from it, which a class derived from this one completes
+// (chapter 09's SBVH adds its build report).
+template <class Set, class Walk, class Base = bvh_accel_base>
+class bvh_accel_t : public per_ray_accel<bvh_accel_t<Set, Walk, Base>, Base> {
 public:
     bvh_accel_t(bool is_virtual, std::string name, bvh_builder builder)
         : name_(std::move(name) + (is_virtual ? "-virtual" : "")), builder_(std::move(builder)) {}
+    // A builder that is handed the mesh itself (accel.hpp's mesh_bvh_builder).
+    bvh_accel_t(std::string name, mesh_bvh_builder builder) : name_(std::move(name)), mesh_builder_(std::move(builder)) {}
 
     std::string name() const override { return name_; }
     const bvh& tree() const override { return tree_; }
@@ -27,6 +31,10 @@ public:
     void build(const scene& s) override {
         set_ = std::make_unique<Set>(s.mesh);
         this->set_frame(ray_frame(s.mesh.bounds()));
+        if (mesh_builder_) {
+            tree_ = mesh_builder_(s.mesh);
+            return;
+        }
         std::vector<aabb> boxes(set_->size());
         std::vector<vec3> centroids(set_->size());
         for (std::size_t i = 0; i < boxes.size(); ++i) boxes[i] = set_->bounds(i), centroids[i] = boxes[i].centroid();
@@ -65,6 +73,7 @@ private:
 
     std::string name_;
     bvh_builder builder_;
+    mesh_bvh_builder mesh_builder_;  // where set, builder_ is not used
     std::unique_ptr<Set> set_;
     bvh tree_;
 };

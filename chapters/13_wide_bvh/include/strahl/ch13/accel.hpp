@@ -34,8 +34,9 @@ public:
 std::unique_ptr<wide_accel_base> make_accel(std::string name, ch04::bvh_builder builder, const wide_config& config);
 
 // The same for a builder that needs the triangles themselves (chapter 09's SBVH splits them), not only their
-// boxes: builder(mesh) gives the binary tree, whose leaves may reference a triangle more than once.
-using mesh_bvh_builder = std::function<ch04::bvh(const triangle_mesh& mesh)>;
-std::unique_ptr<wide_accel_base> make_accel_from_mesh(std::string name, mesh_bvh_builder builder, const wide_config& config);
+// boxes (ch04::mesh_bvh_builder): builder(mesh) gives the binary tree, whose leaves may reference a triangle
+// more than once.
+std::unique_ptr<wide_accel_base> make_accel_from_mesh(std::string name, ch04::mesh_bvh_builder builder,
+                                                      const wide_config& config);
 
 }  // namespace strahl::ch13

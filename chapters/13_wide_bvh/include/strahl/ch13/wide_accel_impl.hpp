@@ -55,7 +55,7 @@ private:
 template <int N, int M, bool Watertight = false>
 class wide_accel final : public per_ray_accel<wide_accel<N, M, Watertight>, wide_accel_base> {
 public:
-    wide_accel(std::string name, mesh_bvh_builder builder, const wide_config& c)
+    wide_accel(std::string name, ch04::mesh_bvh_builder builder, const wide_config& c)
         : name_(std::move(name)), builder_(std::move(builder)), config_(c.collapse), any_nearest_(c.any_hit_nearest) {}
 
     std::string name() const override { return name_; }
@@ -150,7 +150,7 @@ private:
     }
 
     std::string name_;
-    mesh_bvh_builder builder_;
+    ch04::mesh_bvh_builder builder_;
     collapse_config config_;
     bool any_nearest_ = false;
     std::unique_ptr<ch01::triangle_set> set_;
@@ -177,7 +177,7 @@ std::unique_ptr<wide_accel_base> make_accel(std::string name, ch04::bvh_builder 
     }, c);
 }
 
-std::unique_ptr<wide_accel_base> make_accel_from_mesh(std::string name, mesh_bvh_builder builder, const wide_config& c) {
+std::unique_ptr<wide_accel_base> make_accel_from_mesh(std::string name, ch04::mesh_bvh_builder builder, const wide_config& c) {
     const int key = c.width * 100 + c.block;
     if (c.watertight) {
         switch (key) {
