@@ -64,12 +64,12 @@ template <bool Any, int K, class Alone>
         lone_ray l;
         l.r = ray{{p.org[0][k], p.org[1][k], p.org[2][k]}, {p.dir[0][k], p.dir[1][k], p.dir[2][k]}, p.tmin[k], p.tmax[k]};
         l.slack = p.slack[k];
-        l.best = p.best[k];
+        l.best = p.best(k);
         alone(k, l);
         if constexpr (Any) {
-            if (l.blocked) p.best[k].prim = l.best.prim, p.active[0] &= ~(1u << k);
+            if (l.blocked) p.set_best(k, l.best), p.active[0] &= ~(1u << k);
         } else {
-            p.best[k] = l.best, p.tmax[k] = l.r.tmax, p.t1[k] = l.r.tmax + p.slack[k];
+            p.set_best(k, l.best), p.tmax[k] = l.r.tmax, p.t1[k] = l.r.tmax + p.slack[k];
         }
     }
 }

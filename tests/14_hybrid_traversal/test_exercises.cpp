@@ -92,7 +92,7 @@ std::unique_ptr<ray_packet<K, 1>> packet(pcg32& g, int octant, float spread, int
         r.dir *= 0.1f + 50.0f * g.next_float();  // as long as a shadow ray's way to its light
         r.tmax = g.next_float() < 0.5f ? 1.0f + g.next_float() : inf;
         p->set(i, r, ch12::lane_terms(r, f), std::uint32_t(i));
-        p->best[i] = hit{};
+        p->set_best(i, hit{});
     }
     p->finish(f);
     return p;
@@ -174,7 +174,7 @@ TEST_CASE("14.3 the hand-off: out of the packet with the lane's ray, its answer 
         for (int round = 0; round < 100; ++round) {
             auto p = packet<16>(g, int(g.next_u32() % 8), 0.1f, round % 3 == 0 ? 13 : 16);
             for (int k = 0; k < 16; ++k)
-                if (g.next_u32() % 3 == 0) p->best[k] = hit{1.5f, 7u + std::uint32_t(k), 0.25f, 0.5f, invalid_id};
+                if (g.next_u32() % 3 == 0) p->set_best(k, hit{1.5f, 7u + std::uint32_t(k), 0.25f, 0.5f, invalid_id});
             const unsigned lanes = g.next_u32() & p->active[0];
             const auto before = std::make_unique<ray_packet<16, 1>>(*p);
             unsigned called = 0;
@@ -186,7 +186,7 @@ TEST_CASE("14.3 the hand-off: out of the packet with the lane's ray, its answer 
                 // What goes out: the lane's ray, slack and best hit.
                 for (int a = 0; a < 3; ++a) CHECK((l.r.org[a] == p->org[a][k] && l.r.dir[a] == p->dir[a][k]));
                 CHECK((l.r.tmin == p->tmin[k] && l.r.tmax == p->tmax[k] && l.slack == p->slack[k]));
-                CHECK((l.best.t == p->best[k].t && l.best.prim == p->best[k].prim));
+                CHECK((l.best.t == p->best(k).t && l.best.prim == p->best(k).prim));
                 // What comes back: a nearer hit (closest), blocked or not (any).
                 if (k % 2 == 0) {
                     l.best = hit{0.75f, 100u + std::uint32_t(k), 0.1f, 0.2f, invalid_id};
@@ -202,14 +202,14 @@ TEST_CASE("14.3 the hand-off: out of the packet with the lane's ray, its answer 
                 const bool off = (lanes >> k) & 1u, answered = off && k % 2 == 0;
                 CHECK(bool((p->active[0] >> k) & 1u) == (bool((before->active[0] >> k) & 1u) && !(any && answered)));
                 if (answered && !any) {
-                    CHECK((p->best[k].t == 0.75f && p->best[k].prim == 100u + std::uint32_t(k)));
+                    CHECK((p->best(k).t == 0.75f && p->best(k).prim == 100u + std::uint32_t(k)));
                     CHECK(p->tmax[k] == std::nextafter(0.75f, inf));
                     CHECK(p->t1[k] == p->tmax[k] + p->slack[k]);
                 } else if (answered) {
-                    CHECK(p->best[k].prim == 100u + std::uint32_t(k));
+                    CHECK(p->best(k).prim == 100u + std::uint32_t(k));
                     CHECK((p->tmax[k] == before->tmax[k] && p->t1[k] == before->t1[k]));
                 } else {
-                    CHECK((p->best[k].t == before->best[k].t && p->best[k].prim == before->best[k].prim));
+                    CHECK((p->best(k).t == before->best(k).t && p->best(k).prim == before->best(k).prim));
                     CHECK((p->tmax[k] == before->tmax[k] && p->t1[k] == before->t1[k]));
                 }
             }

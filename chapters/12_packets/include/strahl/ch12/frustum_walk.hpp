@@ -79,22 +79,29 @@ void frustum_walk(const ch13::wide_bvh<N, M>& tree, ray_packet<K, V>& p, Stats& 
             if (bits != 0) {
                 alignas(64) float ts[N];
                 t.store(ts);
-                // Sorted in place on top of the stack (farthest first), the nearest then taken off again.
-                entry* hits = stack + top;
-                const int count = std::popcount(bits);
-                for (int k = 0; bits != 0; bits &= bits - 1, ++k) {
-                    const int c = std::countr_zero(bits);
-                    const entry h{n.child[c], ts[c], &n.lo[0][c]};
-                    if constexpr (Nearest) {
-                        int j = k;
+                if constexpr (Nearest) {
+                    // Sorted in place on top of the stack (farthest first), the nearest then taken off again.
+                    entry* hits = stack + top;
+                    int count = 0;
+                    for (; bits != 0; bits &= bits - 1) {
+                        const int c = std::countr_zero(bits);
+                        const entry h{n.child[c], ts[c], &n.lo[0][c]};
+                        int j = count++;
                         for (; j > 0 && hits[j - 1].t <= h.t; --j) hits[j] = hits[j - 1];
                         hits[j] = h;
-                    } else {
-                        hits[count - 1 - k] = h;  // stored order: the first child on top
+                    }
+                    top += count - 1;
+                    e = stack[top];
+                } else {
+                    // Stored order: the first child next, the others pushed last to first.
+                    const int first = std::countr_zero(bits);
+                    e = entry{n.child[first], ts[first], &n.lo[0][first]};
+                    for (unsigned rest = bits & (bits - 1); rest != 0;) {
+                        const int c = 31 - std::countl_zero(rest);
+                        stack[top++] = entry{n.child[c], ts[c], &n.lo[0][c]};
+                        rest &= ~(1u << c);
                     }
                 }
-                top += count - 1;
-                e = stack[top];
                 continue;
             }
         } else {

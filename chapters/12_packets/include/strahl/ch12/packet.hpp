@@ -70,9 +70,10 @@ struct alignas(64) ray_packet {
     alignas(64) float inv[3][size], org_near[3][size], org_far[3][size];
     alignas(64) float tmin[size], tmax[size], slack[size], t0[size], t1[size];
     std::uint32_t ray_index[size];  // the ray's place in the batch
-    hit best[size];                 // closest hit so far
-    alignas(64) float best_t[size], best_u[size], best_w[size];  // the same, lanes side by side (frustum walk)
-    alignas(64) std::int32_t best_id[size];
+    // The best hit so far, lanes side by side (so that a triangle test records K lanes at once): t, u, v
+    // and the triangle (invalid_id as int32: none yet; any hit: the blocking triangle). best(k), set_best().
+    alignas(64) float best_t[size], best_u[size], best_v[size];
+    alignas(64) std::int32_t best_prim[size];
     unsigned active[V];             // lane bits per vector
     int octant = 0;                 // the sign bits of every active lane, where they all agree ...
     bool coherent = true;           // ... which is when the whole packet can choose near planes once
@@ -83,6 +84,15 @@ struct alignas(64) ray_packet {
 
     // Vector v of a field, one SIMD load.
     static vf get(const float* field, int v) { return vf::load(field + v * K); }
+
+    // Lane k's best hit as a hit (a miss: hit{}), and set.
+    hit best(int k) const {
+        const auto prim = std::uint32_t(best_prim[k]);
+        return prim == invalid_id ? hit{} : hit{best_t[k], prim, best_u[k], best_v[k], invalid_id};
+    }
+    void set_best(int k, const hit& h) {
+        best_t[k] = h.t, best_prim[k] = std::int32_t(h.prim), best_u[k] = h.u, best_v[k] = h.v;
+    }
 
     // Empties the packet: no lane active.
     void clear() {
@@ -101,6 +111,7 @@ struct alignas(64) ray_packet {
         for (int a = 0; a < 3; ++a) org[a][lane] = r.org[a], dir[a][lane] = r.dir[a];
         tmin[lane] = r.tmin, tmax[lane] = r.tmax;
         ray_index[lane] = index;
+        set_best(lane, hit{});
         active[lane / K] |= 1u << (lane % K);
     }
     // Lanes 0..count-1 from rays[ids[0..count-1]], no best hit yet, the rest empty (set_ray for each, the
@@ -111,10 +122,10 @@ struct alignas(64) ray_packet {
             for (int a = 0; a < 3; ++a) org[a][lane] = r.org[a], dir[a][lane] = r.dir[a];
             tmin[lane] = r.tmin, tmax[lane] = r.tmax;
             ray_index[lane] = ids[lane];
-            best[lane] = hit{};
-            best_t[lane] = inf, best_id[lane] = std::int32_t(invalid_id), best_u[lane] = 0.0f, best_w[lane] = 0.0f;
         }
         for (int v = 0; v < V; ++v) {
+            vf(inf).store(best_t + v * K), vf(0.0f).store(best_u + v * K), vf(0.0f).store(best_v + v * K);
+            simd::vint<K>(std::int32_t(invalid_id)).store(best_prim + v * K);
             const int n = std::clamp(count - v * K, 0, K);
             active[v] = n == 32 ? ~0u : (1u << n) - 1u;
         }
@@ -344,15 +355,16 @@ template <int K, int V, class At>
     t.store(ts), u.store(us), w.store(ws);
     for (; bits != 0; bits &= bits - 1) {
         const int j = std::countr_zero(bits), i = at(j);
-        if (!closer(ts[j], id, p.best[i])) continue;
-        p.best[i] = hit{ts[j], id, us[j], ws[j], invalid_id};
+        if (!closer(ts[j], id, p.best(i))) continue;
+        p.set_best(i, hit{ts[j], id, us[j], ws[j], invalid_id});
         p.tmax[i] = next_up(ts[j]);
         p.t1[i] = p.tmax[i] + p.slack[i];
     }
 }
 
-// packet_record on the lanes `win` of vector v, K at a time, into the lanes-side-by-side best hit.
-// Signed id comparison: at equal t, best holds a hit (t < inf), so its id is below 2^31 as every triangle's.
+// packet_record on the lanes `win` of vector v (lane j is ray v * K + j), K at a time, as selects: no loop
+// over the lanes that hit. The ids compare as signed int32: at equal t the lane holds a hit (t < inf), whose
+// id, as every triangle's, is below 2^31.
 template <int K, int V>
 [[gnu::always_inline]] inline void packet_record_lanes(ray_packet<K, V>& p, int v, simd::vmask<K> win,
                                                        std::uint32_t id, simd::vfloat<K> t, simd::vfloat<K> u,
@@ -361,12 +373,12 @@ template <int K, int V>
     using vi = simd::vint<K>;
     const int at = v * K;
     const vf bt = vf::load(p.best_t + at);
-    const vi bid = vi::load(p.best_id + at), idv{std::int32_t(id)};
+    const vi bid = vi::load(p.best_prim + at), idv{std::int32_t(id)};
     win = win & ((t < bt) | ((t == bt) & (idv < bid)));
     simd::select(win, t, bt).store(p.best_t + at);
-    simd::select(win, idv, bid).store(p.best_id + at);
+    simd::select(win, idv, bid).store(p.best_prim + at);
     simd::select(win, u, vf::load(p.best_u + at)).store(p.best_u + at);
-    simd::select(win, w, vf::load(p.best_w + at)).store(p.best_w + at);
+    simd::select(win, w, vf::load(p.best_v + at)).store(p.best_v + at);
     const vi b = simd::as_int(t);
     const vi up = simd::select(t == vf(0.0f), vi(1), simd::select(b < vi(0), b - vi(1), b + vi(1)));
     const vf tmax = simd::select(win, simd::as_float(up), vf::load(p.tmax + at));

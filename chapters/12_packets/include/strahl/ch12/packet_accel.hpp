@@ -62,9 +62,9 @@ class packet_accel final : public packet_accel_base {
     // The wide tree's leaves: blocks of this many triangles (the packet tests them one by one; the block size
     // sets how many the optimal collapse may gather into a leaf).
         static constexpr int wide_block = 8;
-    // Walks over vectors of the packet in place record closest hits K lanes at a time (packet_record_lanes);
-    // chapter 14's hand-off and the gathered lanes of the partition walk keep `best`, one lane at a time.
-    static constexpr bool soa_best = W == walk_kind::frustum || (W == walk_kind::wide && !Policy::departures);
+    // Walks that test whole vectors of the packet record closest hits K lanes at a time
+    // (packet_record_lanes); the partition walk's gathered lanes one at a time (packet_record).
+    static constexpr bool lanes_in_place = W != walk_kind::partition;
 
 public:
     packet_accel(std::string name, const packet_config& c, Policy policy = {})
@@ -211,10 +211,8 @@ private:
             for (int k = 0; k < K * V; ++k) {
                 if (!((held[k / K] >> (k % K)) & 1u)) continue;
                 const std::uint32_t i = p->ray_index[k];
-                if constexpr (Any) blocked[i] = p->best[k].found() ? 1 : 0;
-                else if constexpr (soa_best)
-                    hits[i] = hit{p->best_t[k], std::uint32_t(p->best_id[k]), p->best_u[k], p->best_w[k], invalid_id};
-                else hits[i] = p->best[k];
+                if constexpr (Any) blocked[i] = p->best(k).found() ? 1 : 0;
+                else hits[i] = p->best(k);
                 if (!per_ray) continue;
                 if constexpr (!Policy::departures || !requires { stats.left_at; }) {
                     (*per_ray)[i] = used;
@@ -245,10 +243,10 @@ private:
             for (unsigned x = b; x != 0; x &= x - 1) {
                 const int i = at(std::countr_zero(x));
                 p.active[i / K] &= ~(1u << (i % K));
-                p.best[i].prim = id;
+                p.best_prim[i] = std::int32_t(id);
             }
             lanes &= ~b;
-        } else if constexpr (soa_best) {
+        } else if constexpr (lanes_in_place) {
             packet_record_lanes(p, at(0) / K, simd::from_bits<K>(b), id, t, u, w);
         } else {
             packet_record(p, b, at, id, t, u, w);

@@ -39,10 +39,10 @@ coherence packet_coherence(const ch12::ray_packet<K, 1>& p);
 int packet_threshold(const coherence& c, int lanes, const threshold_rule& rule);
 
 // Exercise 14.3 (hybrid.cpp): the hand-off. Each ray of `lanes` leaves packet p: its lone_ray is made
-// from its lane (org, dir, tmin, tmax, slack, best), alone(k, lone) traces it, and the lane takes the
-// answer back: closest hit (Any false) the best hit, tmax and t1 = tmax + slack; any hit (Any true): a
-// blocked ray is answered (its lane's best.prim set to the blocking triangle, its bit cleared from
-// p.active[0]). Lanes outside `lanes` are not touched.
+// from its lane (org, dir, tmin, tmax, slack, p.best(k)), alone(k, lone) traces it, and the lane takes the
+// answer back: closest hit (Any false) the best hit (p.set_best), tmax and t1 = tmax + slack; any hit (Any
+// true): a blocked ray is answered (its lane's best hit set to the lone ray's, which names the blocking
+// triangle, its bit cleared from p.active[0]). Lanes outside `lanes` are not touched.
 template <bool Any, int K, class Alone>
 void hand_off(ch12::ray_packet<K, 1>& p, unsigned lanes, Alone&& alone);
 
