@@ -61,7 +61,7 @@ class packet_accel final : public packet_accel_base {
     static constexpr bool wide_tree = W == walk_kind::wide || W == walk_kind::frustum;
     // The wide tree's leaves: blocks of this many triangles (the packet tests them one by one; the block size
     // sets how many the optimal collapse may gather into a leaf).
-        static constexpr int wide_block = 8;
+    static constexpr int wide_block = 8;
     // Walks that test whole vectors of the packet record closest hits K lanes at a time
     // (packet_record_lanes); the partition walk's gathered lanes one at a time (packet_record).
     static constexpr bool lanes_in_place = W != walk_kind::partition;
