@@ -1,6 +1,7 @@
 #include "strahl/program.hpp"
 #include "strahl/scene.hpp"
 #include "strahl/todo.hpp"
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
@@ -49,18 +50,32 @@ std::string bytes_text(std::uint64_t bytes) {
 }
 }  // namespace
 
-cli::cli(std::string program, std::string summary) : program_(std::move(program)), summary_(std::move(summary)) {
+struct cli::parser {
+    CLI::App app;
+};
+
+cli::cli(std::string program, std::string summary)
+    : program_(std::move(program)), summary_(std::move(summary)), parser_(std::make_unique<parser>()) {
+    parser_->app.name(program_);
+    parser_->app.description(summary_);
+    parser_->app.set_help_flag();   // --help is an entry of ours, printed by usage()
+    parser_->app.allow_extras(true);  // what CLI11 does not take is named below, as the course words it
     flag("help", "print this help and exit");
 }
+cli::cli(cli&&) noexcept = default;
+cli& cli::operator=(cli&&) noexcept = default;
+cli::~cli() = default;
 
 cli& cli::flag(const std::string& name, const std::string& help) {
     entries_.push_back({name, "", "", help, true});
+    parser_->app.add_flag(dashed(name))->description(help)->disable_flag_override();
     return *this;
 }
 
 cli& cli::option(const std::string& name, const std::string& value_name, const std::string& default_value,
                  const std::string& help) {
     entries_.push_back({name, value_name, default_value, help, false});
+    parser_->app.add_option(dashed(name), help)->type_name(value_name)->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
     return *this;
 }
 
@@ -71,28 +86,22 @@ const cli::entry& cli::find(const std::string& name) const {
 }
 
 bool cli::parse(int argc, const char* const* argv) {
-    for (int i = 1; i < argc; ++i) {
-        std::string arg = argv[i];
-        if (arg.rfind("--", 0) != 0 || arg.size() == 2) throw usage_error("unexpected argument '" + arg + "'");
-        arg = arg.substr(2);
-        std::string value;
-        bool has_value = false;
-        if (const auto eq = arg.find('='); eq != std::string::npos) {
-            value = arg.substr(eq + 1);
-            arg = arg.substr(0, eq);
-            has_value = true;
+    try {
+        parser_->app.parse(argc, argv);
+    } catch (const CLI::ParseError& error) {
+        // CLI11's words for a flag given a value ("quick was given a disallowed flag override") and an
+        // option without one ("--width: 1 required W missing"), in the course's.
+        const std::string what = error.what();
+        for (const entry& e : entries_) {
+            if (e.is_flag && what.rfind(e.name + " was given", 0) == 0) throw usage_error(dashed(e.name) + " takes no value");
+            if (!e.is_flag && what.rfind(dashed(e.name) + ":", 0) == 0)
+                throw usage_error(dashed(e.name) + " needs a value (" + e.value_name + ")");
         }
-        const entry& e = find(arg);
-        if (e.is_flag) {
-            if (has_value) throw usage_error(dashed(arg) + " takes no value");
-            values_.insert_or_assign(arg, std::string(1, '1'));  // flags read as "1"
-            continue;
-        }
-        if (!has_value) {
-            if (i + 1 >= argc) throw usage_error(dashed(arg) + " needs a value (" + e.value_name + ")");
-            value = argv[++i];
-        }
-        values_[arg] = value;
+        throw usage_error(what);
+    }
+    for (const std::string& extra : parser_->app.remaining()) {
+        if (extra.rfind("--", 0) != 0 || extra.size() == 2) throw usage_error("unexpected argument '" + extra + "'");
+        throw usage_error("unknown option " + extra.substr(0, extra.find('=')));
     }
     if (has("help")) {
         std::cout << usage();
@@ -103,13 +112,14 @@ bool cli::parse(int argc, const char* const* argv) {
 
 bool cli::has(const std::string& name) const {
     find(name);
-    return values_.count(name) != 0;
+    return parser_->app.get_option(dashed(name))->count() != 0;
 }
 
 std::string cli::get(const std::string& name) const {
     const entry& e = find(name);
-    const auto it = values_.find(name);
-    return it != values_.end() ? it->second : e.default_value;
+    if (e.is_flag) return has(name) ? "1" : "";  // flags read as "1"
+    const CLI::Option* o = parser_->app.get_option(dashed(name));
+    return o->count() != 0 ? o->as<std::string>() : e.default_value;
 }
 
 int cli::get_int(const std::string& name) const {

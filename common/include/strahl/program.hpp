@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <map>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -23,10 +24,16 @@ public:
     using std::runtime_error::runtime_error;
 };
 
-// A tiny option parser: --name VALUE, --name=VALUE and --flag. --help is always there.
+// The command line of every program: --name VALUE, --name=VALUE and --flag, parsed by CLI11 (Debian's
+// libcli11-dev); this class only keeps the course's conventions around it: options read as text and
+// checked when read (get_int, get_double: the message names the option), the last of a repeated option
+// wins, every error a usage_error (exit 2), and --help printing the same usage text in every program.
 class cli {
 public:
     cli(std::string program, std::string summary);
+    cli(cli&&) noexcept;
+    cli& operator=(cli&&) noexcept;
+    ~cli();
 
     cli& flag(const std::string& name, const std::string& help);
     cli& option(const std::string& name, const std::string& value_name, const std::string& default_value,
@@ -48,10 +55,11 @@ private:
         std::string name, value_name, default_value, help;
         bool is_flag;
     };
+    struct parser;  // CLI11's App, kept out of this header (CLI11 is a large header-only library)
     const entry& find(const std::string& name) const;
     std::string program_, summary_;
     std::vector<entry> entries_;
-    std::map<std::string, std::string> values_;
+    std::unique_ptr<parser> parser_;
 };
 
 // Runs body(), the program's real main, and turns exceptions into one clear line on stderr and an exit code:
