@@ -264,7 +264,7 @@ int run(int argc, const char* const* argv) {
                 "(default 8: the course's teapot)")
         .option("depth", "N", "5", "Whitted recursion limit: reflection rays up to this depth")
         .option("glossy-samples", "S", "16", "reflection rays per rough-mirror hit")
-        .option("threads", "N", "0", "worker threads, 0..1024 (0: one per core)")
+        .threads_option("0", "worker threads, 0..1024 (0: one per core)")
         .option("seed", "N", "1", "random seed of the rough-mirror samples")
         .option("out", "FILE|DIR", "", "write the image to FILE (and its ray heat map to FILE_rays.png), or the "
                 "images, renders.csv and glossy.csv into DIR/ (default out/01_first_tracer/)")

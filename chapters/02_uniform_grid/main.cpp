@@ -231,9 +231,8 @@ int run(int argc, const char* const* argv) {
                 "stadium (default 8: the course's teapot and teapot_stadium)")
         .option("lambda", "L", "4", "cells per triangle")
         .option("width", "N", "", "image width, 8..8192 (default 512, 256 with --quick); height 3/4 of it")
-        .option("threads", "N", "0", "worker threads, 0..1024 (0: one per core)")
-        .option("out", "DIR", "", "write images, CSV and SVG into DIR/ (default out/02_uniform_grid/)")
-        .flag("force", "replace existing files in a folder named with --out")
+        .threads_option("0", "worker threads, 0..1024 (0: one per core)")
+        .output_options("write images, CSV and SVG into DIR/ (default out/02_uniform_grid/)")
         .flag("quick", "smaller images and fewer runs, a few seconds (./course run)");
     if (!args.parse(argc, argv)) return 0;
     const bool quick = args.has("quick");

@@ -116,15 +116,13 @@ void run_scene(const scene& s, const options& o, std::ostream& csv) {
 int run(int argc, const char* const* argv) {
     cli args("ch03", "Chapter 03, the k-d tree (" + std::string(track_name()) + "): SAH k-d trees over plain triangles and "
              "virtual objects, primary rays through them, tree statistics and the split planes drawn.");
-    args.option("scene", "NAME", "all", "teapot, stadium, bunny, sponza or all (all: teapot, stadium, bunny; "
-                                        "Sponza only with --sponza)")
+    args.scene_option({"teapot", "stadium", "bunny", "sponza"}, {"teapot", "stadium", "bunny"}, "Sponza only with --sponza")
         .option("width", "N", "", "image width, 1..16384 (default 640, 320 with --quick; 16384 x 16384 needs over "
                                   "20 GB of memory: refused where the machine has less)")
         .option("height", "N", "", "image height, 1..16384 (default 3/4 of the width)")
         .option("levels", "N", "4", "draw the split planes of this many levels")
-        .option("threads", "N", "0", "worker threads, 0..1024 (0: one per core)")
-        .option("out", "DIR", "", "write the images and runs.csv into DIR/ (default out/03_kd_tree/)")
-        .flag("force", "replace existing files in a folder named with --out")
+        .threads_option("0", "worker threads, 0..1024 (0: one per core)")
+        .output_options("write the images and runs.csv into DIR/ (default out/03_kd_tree/)")
         .flag("sponza", "with --scene all: also Sponza (262k triangles, a build of seconds)")
         .flag("quick", "smaller images and only the built-in scenes")
         .option("diagrams", "DIR", "", "only draw the chapter's figure into DIR/ (near_far.svg; --force to replace it)");
@@ -150,20 +148,16 @@ int run(int argc, const char* const* argv) {
     }
     o.force = args.has("force");
 
-    const std::string which = args.get("scene");
-    if (which != "all" && which != "teapot" && which != "stadium" && which != "bunny" && which != "sponza")
-        throw usage_error("--scene must be teapot, stadium, bunny, sponza or all, not '" + which + "'");
+    std::vector<std::string> all = {"teapot", "stadium"};
+    if (!quick) all.push_back("bunny");
+    if (!quick && args.has("sponza")) all.push_back("sponza");
+    const std::vector<std::string> names = read_scene_names(args, {"teapot", "stadium", "bunny", "sponza"}, all);
     const fs::path runs_path = o.folder / "runs.csv";
     prepare_output(runs_path, o.user_named, o.force);
     std::ofstream runs(runs_path);
     runs << runs_header << '\n';
-    const auto shared = [&](const char* file, const char* name) {
-        if (const auto s = load_shared_mesh(file, name)) run_scene(*s, o, runs);
-    };
-    if (which == "all" || which == "teapot") run_scene(builtin_scene("teapot"), o, runs);
-    if (which == "all" || which == "stadium") run_scene(builtin_scene("teapot_stadium"), o, runs);
-    if ((which == "all" && !quick) || which == "bunny") shared("bunny.ply", "bunny");
-    if ((which == "all" && args.has("sponza") && !quick) || which == "sponza") shared("sponza.obj", "sponza");
+    for (const std::string& name : names)
+        if (const auto s = course_scene(name)) run_scene(*s, o, runs);
     runs.close();
     std::printf("wrote %s\n", runs_path.string().c_str());
     std::printf("against the uniform grid (chapter 02) and Embree, on the same rays:\n"

@@ -174,14 +174,13 @@ int run(int argc, const char* const* argv) {
     cli args("ch04", "Chapter 04, the BVH (" + std::string(track_name()) + "): object and spatial median BVHs over plain "
              "triangles and virtual objects, primary rays through them, tree statistics, and box tests per "
              "pixel as a heat map with the boxes of chosen levels drawn over it.");
-    args.option("scene", "NAME", "all", "teapot, stadium, bunny or all (all: teapot, stadium, bunny)")
+    args.scene_option({"teapot", "stadium", "bunny"}, {"teapot", "stadium", "bunny"}, "only the first two with --quick")
         .option("width", "N", "", "image width, 1..16384 (default 640, 320 with --quick; 16384 x 16384 needs over "
                                   "20 GB of memory: refused where the machine has less)")
         .option("height", "N", "", "image height, 1..16384 (default 3/4 of the width)")
         .option("levels", "A-B", "2-3", "draw the boxes of the nodes at depths A to B (the root is depth 0)")
-        .option("threads", "N", "0", "worker threads, 0..1024 (0: one per core)")
-        .option("out", "DIR", "", "write the images and runs.csv into DIR/ (default out/04_bvh/)")
-        .flag("force", "replace existing files in a folder named with --out")
+        .threads_option("0", "worker threads, 0..1024 (0: one per core)")
+        .output_options("write the images and runs.csv into DIR/ (default out/04_bvh/)")
         .flag("quick", "smaller images and only the built-in scenes")
         .flag("sweep", "measure instead how the grid, the k-d tree and the BVH scale with the triangle count "
                        "(writes sweep.csv, sweep.svg)")
@@ -216,17 +215,15 @@ int run(int argc, const char* const* argv) {
         sweep(quick, o);
         return 0;
     }
-    const std::string which = args.get("scene");
-    if (which != "all" && which != "teapot" && which != "stadium" && which != "bunny")
-        throw usage_error("--scene must be teapot, stadium, bunny or all, not '" + which + "'");
+    std::vector<std::string> all = {"teapot", "stadium"};
+    if (!quick) all.push_back("bunny");
+    const std::vector<std::string> names = read_scene_names(args, {"teapot", "stadium", "bunny"}, all);
     const fs::path runs_path = o.folder / "runs.csv";
     prepare_output(runs_path, o.user_named, o.force);
     std::ofstream runs(runs_path);
     runs << runs_header << '\n';
-    if (which == "all" || which == "teapot") run_scene(builtin_scene("teapot"), o, runs);
-    if (which == "all" || which == "stadium") run_scene(builtin_scene("teapot_stadium"), o, runs);
-    if ((which == "all" && !quick) || which == "bunny")
-        if (const auto s = load_shared_mesh("bunny.ply", "bunny")) run_scene(*s, o, runs);
+    for (const std::string& name : names)
+        if (const auto s = course_scene(name)) run_scene(*s, o, runs);
     runs.close();
     std::printf("wrote %s\n", runs_path.string().c_str());
     std::printf("against the grid, the k-d tree and Embree, on the same rays:\n"

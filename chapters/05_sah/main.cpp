@@ -208,15 +208,14 @@ int run(int argc, const char* const* argv) {
     cli args("ch05", "Chapter 05, the surface area heuristic (" + std::string(track_name()) + "): median, full-sweep and binned "
              "SAH BVHs on the same rays; build time, SAH cost and Mrays/s per number of bins, as a table, a CSV "
              "file and two plots; box tests per pixel as a heat map, median against SAH.");
-    args.option("scene", "NAME", "all", "stadium, bunny, sponza, teapot or all (all: stadium, bunny, sponza)")
+    args.scene_option({"stadium", "bunny", "sponza", "teapot"}, {"stadium", "bunny", "sponza"})
         .option("bins", "LIST", "4,8,16,32,64,128,256", "comma-separated bin counts, each in [2, 256]")
         .option("costs", "CT,CI", "1,1", "the SAH's traversal and intersection costs")
         .option("width", "N", "", "primary rays per row, 1..4096 (default 192, 96 with --quick)")
         .option("height", "N", "", "rows, 1..4096 (default 3/4 of the width)")
         .option("repeats", "K", "3", "timed runs per measurement after a warm-up; the median is reported")
-        .option("out", "DIR", "", "write the CSV file, the plots and the heat maps into DIR/ (default out/05_sah/)")
+        .output_options("write the CSV file, the plots and the heat maps into DIR/ (default out/05_sah/)")
         .option("replot", "CSV", "", "only redraw the two plots from a bins.csv written earlier (no building, no tracing)")
-        .flag("force", "replace existing files in a folder named with --out")
         .flag("quick", "the teapot in a stadium only, 96 x 72 rays, bins 4, 16, 64")
         .option("diagrams", "DIR", "", "only draw the chapter's figure into DIR/ (sweep_and_bins.svg; --force to "
                                        "replace it)");
@@ -255,18 +254,13 @@ int run(int argc, const char* const* argv) {
         throw usage_error("--costs wants two positive numbers CT,CI, not '" + args.get("costs") + "'");
     o.costs = {ct, ci};
 
-    const std::string which = quick ? "stadium" : args.get("scene");
-    if (which != "all" && which != "teapot" && which != "stadium" && which != "bunny" && which != "sponza")
-        throw usage_error("--scene must be stadium, bunny, sponza, teapot or all, not '" + which + "'");
+    std::vector<std::string> names = read_scene_names(args, {"stadium", "bunny", "sponza", "teapot"}, {"stadium", "bunny", "sponza"});
+    if (quick) names = {"stadium"};
     for (const fs::path& p : {csv, trade, cost}) prepare_output(p, o.user_named, o.force);
     const thread_limit one(1);  // the chapter's figures are single-threaded, as in the race's table
     scene_rows all;
-    if (which == "teapot") all.emplace_back("teapot", run_scene(builtin_scene("teapot"), "teapot", o));
-    if (which == "all" || which == "stadium") all.emplace_back("stadium", run_scene(builtin_scene("teapot_stadium"), "stadium", o));
-    for (const auto& [name, file] : {std::pair{"bunny", "bunny.ply"}, std::pair{"sponza", "sponza.obj"}}) {
-        if (which != "all" && which != name) continue;
-        if (const auto s = load_shared_mesh(file, name)) all.emplace_back(name, run_scene(*s, name, o));
-    }
+    for (const std::string& name : names)
+        if (const auto s = course_scene(name)) all.emplace_back(name, run_scene(*s, name, o));
     write_table(all, csv);
     write_plots(all, trade, cost);
     std::printf("wrote %s, %s, %s\n", csv.string().c_str(), trade.string().c_str(), cost.string().c_str());

@@ -188,15 +188,14 @@ int run(int argc, const char* const* argv) {
     cli args("ch06", "Chapter 06, refining a BVH (" + std::string(track_name()) + "): tree rotations and reinsertion on chapter "
              "04's median tree and chapter 05's binned SAH tree; SAH cost against refinement time per "
              "iteration budget, and Mrays/s before and after, as a table, a CSV file and a plot per scene.");
-    args.option("scene", "NAME", "all", "stadium, bunny, sponza, teapot or all (all: stadium, bunny, sponza)")
+    args.scene_option({"stadium", "bunny", "sponza", "teapot"}, {"stadium", "bunny", "sponza"})
         .option("rotations", "LIST", "1,2,4,8,64", "comma-separated budgets of rotation passes")
         .option("reinsertions", "LIST", "1,4,16,64,256", "comma-separated budgets of reinsertion batches")
         .option("width", "N", "", "primary rays per row, 1..4096 (default 192, 96 with --quick)")
         .option("height", "N", "", "rows, 1..4096 (default 3/4 of the width)")
         .option("repeats", "K", "3", "timed runs per measurement after a warm-up; the median is reported")
-        .option("out", "DIR", "", "write the CSV file and the plots into DIR/ (default out/06_refinement/)")
+        .output_options("write the CSV file and the plots into DIR/ (default out/06_refinement/)")
         .option("replot", "CSV", "", "only redraw the plots from a refinement.csv written earlier (no refining, no tracing)")
-        .flag("force", "replace existing files in a folder named with --out")
         .flag("quick", "the teapot in a stadium only, 96 x 72 rays, budgets 1,64 and 1,16,64")
         .option("diagrams", "DIR", "", "only draw the chapter's figure into DIR/ (rotation.svg; --force to replace it)");
     if (!args.parse(argc, argv)) return 0;
@@ -228,13 +227,12 @@ int run(int argc, const char* const* argv) {
     o.reinsertion_budgets =
         parse_int_list(quick && !args.has("reinsertions") ? "1,16,64" : args.get("reinsertions"), "reinsertions", 1, 10000);
 
-    const std::string which = quick ? "stadium" : args.get("scene");
-    if (which != "all" && which != "teapot" && which != "stadium" && which != "bunny" && which != "sponza")
-        throw usage_error("--scene must be stadium, bunny, sponza, teapot or all, not '" + which + "'");
+    std::vector<std::string> names = read_scene_names(args, {"stadium", "bunny", "sponza", "teapot"}, {"stadium", "bunny", "sponza"});
+    if (quick) names = {"stadium"};
     // Every file this run may write is checked before the work starts, not after it.
     const fs::path csv = o.folder / "refinement.csv";
     prepare_output(csv, o.user_named, o.force);
-    for (const std::string& name : which == "all" ? std::vector<std::string>{"stadium", "bunny", "sponza"} : std::vector{which})
+    for (const std::string& name : names)
         prepare_output(plot_path(o.folder, name), o.user_named, o.force);
     std::vector<row> rows;
     const auto add = [&](const std::string& name, scene s) {
@@ -242,11 +240,8 @@ int run(int argc, const char* const* argv) {
         const std::vector<row> r = run_scene(s, o);
         rows.insert(rows.end(), r.begin(), r.end());
     };
-    if (which == "teapot") add("teapot", builtin_scene("teapot"));
-    if (which == "all" || which == "stadium") add("stadium", builtin_scene("teapot_stadium"));
-    for (const auto& [name, file] : {std::pair{"bunny", "bunny.ply"}, std::pair{"sponza", "sponza.obj"}})
-        if (which == "all" || which == name)
-            if (const auto s = load_shared_mesh(file, name)) add(name, *s);
+    for (const std::string& name : names)
+        if (const auto s = course_scene(name)) add(name, *s);
     write_table(rows, csv);
     write_plots(rows, o.folder);
     std::printf("wrote %s", csv.string().c_str());

@@ -258,15 +258,14 @@ int run(int argc, const char* const* argv) {
              "radix sort against std::sort and tbb::parallel_sort, and both builders' speed-up on N threads, as tables "
              "and CSV files.");
     args.option("scene", "NAME", "all", "stadium, soup, bunny, sponza, teapot or all (all: stadium, soup, bunny, sponza)")
-        .option("threads", "N", "2", "the second thread count builds and sorts are timed at, 0..1024 (0: one per core)")
+        .threads_option("2", "the second thread count builds and sorts are timed at, 0..1024 (0: one per core)")
         .option("width", "N", "", "primary rays per row, 1..4096 (default 192, 48 with --quick)")
         .option("height", "N", "", "rows, 1..4096 (default 3/4 of the width)")
         .option("repeats", "K", "", "timed runs per measurement after a warm-up; the median is reported (default 5, "
                 "1 with --quick)")
-        .option("out", "DIR", "", "write the CSV files and the plots into DIR/ (default out/07_lbvh/)")
+        .output_options("write the CSV files and the plots into DIR/ (default out/07_lbvh/)")
         .option("replot", "DIR", "", "only redraw the plots (phases.svg, build_vs_trace.svg, sort.svg) from the three CSV "
                 "files in DIR written earlier (no building, no tracing)")
-        .flag("force", "replace existing files in a folder named with --out")
         .flag("quick", "the teapot and a soup of 20,000 triangles, 48 x 36 rays, one repeat");
     if (!args.parse(argc, argv)) return 0;
     const bool quick = args.has("quick");

@@ -82,16 +82,15 @@ int run(int argc, const char* const* argv) {
              "one thread, as a table and builders.csv. --from-race draws every BVH builder's and Embree's build/trace "
              "trade from a race, with its Pareto frontier.");
     args.option("scene", "NAME", "all", "stadium, soup, bunny, sponza, teapot or all (all: stadium, soup, bunny, sponza)")
-        .option("threads", "N", "2", "the second thread count builds are timed at, 0..1024 (0: one per core)")
+        .threads_option("2", "the second thread count builds are timed at, 0..1024 (0: one per core)")
         .option("width", "N", "", "primary rays per row, 1..4096 (default 192, 48 with --quick)")
         .option("height", "N", "", "rows, 1..4096 (default 3/4 of the width)")
         .option("repeats", "K", "", "timed runs per measurement after a warm-up; the median is reported (default 5, "
                 "1 with --quick)")
-        .option("out", "DIR", "", "write builders.csv (or with --from-race pareto.csv and pareto.svg) into DIR/ "
+        .output_options("write builders.csv (or with --from-race pareto.csv and pareto.svg) into DIR/ "
                 "(default out/08_hybrid_builders/)")
         .option("from-race", "CSV", "", "only draw pareto.svg and write pareto.csv from a race.csv (race --processes N "
                 "with chapters 04-08's *-fast BVH rows and embree-low, -medium and -high)")
-        .flag("force", "replace existing files in a folder named with --out")
         .flag("quick", "the teapot and a soup of 20,000 triangles, 48 x 36 rays, one repeat");
     if (!args.parse(argc, argv)) return 0;
     fs::path folder = "out/08_hybrid_builders";

@@ -203,7 +203,8 @@ int run(int argc, const char* const* argv) {
              "binned SAH tree, chapter 06's reinserted tree and chapter 03's k-d tree (SAH cost, references per "
              "triangle, memory, build ms, Mrays/s on one thread, as compare.csv), and the overlap threshold alpha "
              "swept from 1 to 0 (alpha.csv, alpha.svg).");
-    args.option("scene", "NAME", "all", "sponza, stadium, bunny, armadillo or all (the shared meshes where present)")
+    args.scene_option({"sponza", "stadium", "bunny", "armadillo"}, {"sponza", "stadium", "bunny", "armadillo"},
+                      "the shared meshes where present")
         .option("width", "N", "", "primary rays per row, 1..4096 (default 192, 48 with --quick)")
         .option("height", "N", "", "rows, 1..4096 (default 3/4 of the width)")
         .option("repeats", "K", "", "timed runs per measurement after a warm-up; the median is reported (default 5, "
@@ -215,9 +216,8 @@ int run(int argc, const char* const* argv) {
         .flag("sweep-only", "only the alpha sweep (compare.csv then holds its header alone)")
         .option("variants", "LIST", "", "instead: the SBVH with each variant at each of --alphas, into variants.csv: "
                 "default, budget=B, bins=K (chopped bins), leaf=N (max_leaf) or unsplit=0|1, comma-separated")
-        .option("out", "DIR", "", "write compare.csv, alpha.csv and alpha.svg into DIR/ (default out/09_sbvh/)")
+        .output_options("write compare.csv, alpha.csv and alpha.svg into DIR/ (default out/09_sbvh/)")
         .option("replot", "CSV", "", "only draw alpha.svg from an alpha.csv this program wrote")
-        .flag("force", "replace existing files in a folder named with --out")
         .flag("quick", "the teapot in a stadium only, 48 x 36 rays, one repeat, alphas 1, 1e-5 and 0");
     if (!args.parse(argc, argv)) return 0;
     fs::path folder = "out/09_sbvh";
@@ -255,9 +255,9 @@ int run(int argc, const char* const* argv) {
             o.alphas.push_back(a);
         }
     }
-    const std::string which = quick ? "stadium" : args.get("scene");
-    if (which != "all" && which != "sponza" && which != "stadium" && which != "bunny" && which != "armadillo")
-        throw usage_error("--scene must be sponza, stadium, bunny, armadillo or all, not '" + which + "'");
+    std::vector<std::string> names = read_scene_names(args, {"sponza", "stadium", "bunny", "armadillo"},
+                                                      {"sponza", "stadium", "bunny", "armadillo"});
+    if (quick) names = {"stadium"};
     std::vector<std::string> variants;
     if (args.has("variants")) {
         std::stringstream list(args.get("variants"));
@@ -269,14 +269,8 @@ int run(int argc, const char* const* argv) {
     }
 
     std::vector<scene> scenes;
-    const auto shared = [&](const char* name, const char* file) {
-        if (which != "all" && which != name) return;
-        if (auto s = load_shared_mesh(file, name)) scenes.push_back(std::move(*s));
-    };
-    shared("sponza", "sponza.obj");
-    if (which == "all" || which == "stadium") scenes.push_back(builtin_scene("teapot_stadium"));
-    shared("bunny", "bunny.ply");
-    shared("armadillo", "armadillo.obj");
+    for (const std::string& name : names)
+        if (auto s = course_scene(name)) scenes.push_back(std::move(*s));
     std::ostringstream compare, sweep;
     if (!variants.empty()) {
         for (const scene& s : scenes) run_variants(s, o, variants, compare);

@@ -280,12 +280,11 @@ int run(int argc, const char* const* argv) {
         .option("height", "N", "", "rows, 1..2048 (default 3/4 of the width)")
         .option("instances", "N", "", "instances in the big field, 1..1048576 (default 150 bunnies: 10.4 million "
                 "triangles; 16 with --quick)")
-        .option("out", "DIR", "", "write animation.csv, breakeven.csv, summary.csv, big.csv, update_vs_trace.svg, sah_drift.svg, frames/ and "
+        .output_options("write animation.csv, breakeven.csv, summary.csv, big.csv, update_vs_trace.svg, sah_drift.svg, frames/ and "
                 "animation.gif into DIR/ (default out/10_two_level/)")
         .option("replot", "CSV", "", "only redraw update_vs_trace.svg and sah_drift.svg and rewrite summary.csv from an "
                 "animation.csv written earlier (no building, no tracing)")
         .flag("no-kd", "leave out the k-d tree (its build is the slowest by far)")
-        .flag("force", "replace existing files in a folder named with --out")
         .flag("quick", "teapots and a sphere, 3 frames, 48 x 36 rays, 16 instances in the big field");
     if (!args.parse(argc, argv)) return 0;
     fs::path folder = "out/10_two_level";

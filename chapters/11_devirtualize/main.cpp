@@ -195,17 +195,16 @@ int run(int argc, const char* const* argv) {
     cli args("ch11", "Chapter 11, model only what the scene requires (" + std::string(track_name()) + "): one tree, the same rays, six "
              "ways to reach the primitives (virtual, variant, type-sorted, triangles, inlined, soa), one thread; then "
              "the Whitted renderer with virtual materials, a variant and a switch. Tables, CSV files, plots, an image.");
-    args.option("scene", "NAME", "all", "bunny, sponza, stadium or all (all: bunny and Sponza where present, else the stadium)")
+    args.scene_option({"bunny", "sponza", "stadium"}, {"bunny", "sponza"}, "where present, else the stadium")
         .option("width", "N", "", "primary rays per row (default 192, 64 with --quick)")
         .option("height", "N", "", "rows (default 3/4 of the width)")
         .option("repeats", "K", "5", "timed runs per measurement after a warm-up; the median is reported")
         .option("render-size", "N", "", "the render's width and height in pixels (default 128, 32 with --quick)")
         .option("glossy-samples", "S", "16", "reflection rays per rough-mirror hit, 1 to 64")
-        .option("out", "DIR", "", "write steps.csv, render.csv, staircase.svg and render.png into DIR/ "
+        .output_options("write steps.csv, render.csv, staircase.svg and render.png into DIR/ "
                                    "(default out/11_devirtualize/)")
         .option("from-race", "CSV", "", "only draw staircase.svg from a race's medians (race.csv of race --processes N "
                                          "with the ch11 rows first; ch13-bvh16 and embree-medium where present)")
-        .flag("force", "replace existing files in a folder named with --out")
         .flag("quick", "the teapot in a stadium only, 64 x 48 rays, a 32 x 32 render, one repeat");
     if (!args.parse(argc, argv)) return 0;
     if (args.has("from-race")) {
@@ -230,19 +229,20 @@ int run(int argc, const char* const* argv) {
     if (render_size < 1 || render_size > 2048) throw usage_error("--render-size must lie in [1, 2048]");
     const int glossy = args.get_int("glossy-samples");
     if (glossy < 1 || glossy > 64) throw usage_error("--glossy-samples must lie in [1, 64]");
-    const std::string which = quick ? "stadium" : args.get("scene");
-    if (which != "all" && which != "stadium" && which != "bunny" && which != "sponza")
-        throw usage_error("--scene must be bunny, sponza, stadium or all, not '" + which + "'");
+    // all: the meshes where present, else the stadium
+    std::vector<std::string> names = read_scene_names(args, {"bunny", "sponza", "stadium"}, {"bunny", "sponza"});
+    if (quick) names = {"stadium"};
+    const bool all = names.size() > 1;
     const thread_limit one(1);
     std::vector<step_row> rows;
-    for (const auto& [name, file] : {std::pair{"bunny", "bunny.ply"}, std::pair{"sponza", "sponza.obj"}}) {
-        if (which != "all" && which != name) continue;
-        if (const auto s = load_shared_mesh(file, name)) {
+    for (const std::string& name : names) {
+        if (name == "stadium") continue;
+        if (const auto s = course_scene(name)) {
             const auto r = run_steps(*s, name, size.width, size.height, repeats);
             rows.insert(rows.end(), r.begin(), r.end());
         }
     }
-    if (which == "stadium" || (which == "all" && rows.empty()))
+    if (names == std::vector<std::string>{"stadium"} || (all && rows.empty()))
         rows = run_steps(builtin_scene("teapot_stadium"), "stadium", size.width, size.height, repeats);
     const std::vector<render_row> renders =
         run_renderers(render_scene(), render_size, glossy, std::min(repeats, 3), folder / "render.png");

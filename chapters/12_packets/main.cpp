@@ -339,16 +339,15 @@ int run(int argc, const char* const* argv) {
              "its 8-wide tree against packets of 4 to 256 rays (the masked, ranged and partition walks over chapter "
              "05's binary tree; K rays per child of the 8-wide tree, and its frustum alone); primary, shadow and diffuse rays on one "
              "thread; Mrays/s, busy lanes, nodes, boxes and triangles per ray; two tables, a plot and heat maps.");
-    args.option("scene", "NAME", "all", "stadium, bunny, sponza or all (all: the three; the meshes where present)")
+    args.scene_option({"stadium", "bunny", "sponza"}, {"stadium", "bunny", "sponza"}, "the meshes where present")
         .option("width", "N", "", "primary rays per row (default 192, 96 with --quick); the packets' tiles are cut "
                 "from its rows")
         .option("height", "N", "", "rows (default 3/4 of the width)")
         .option("repeats", "K", "5", "timed rounds after a warm-up round (each traces every ray set with every "
                 "tracer); the median is reported")
-        .option("out", "DIR", "", "write packets.csv, lanes.csv, vs_ch13.svg and SCENE_lanes.png into DIR/ "
+        .output_options("write packets.csv, lanes.csv, vs_ch13.svg and SCENE_lanes.png into DIR/ "
                 "(default out/12_packets/)")
         .flag("strips", "packets of consecutive rays (rows of 4 to 256) instead of tiles of the image")
-        .flag("force", "replace existing files in a folder named with --out")
         .flag("quick", "the teapot in a stadium only, 96 x 72 rays");
     if (!args.parse(argc, argv)) return 0;
     const bool quick = args.has("quick"), strips = args.has("strips");
@@ -358,17 +357,13 @@ int run(int argc, const char* const* argv) {
     const image_size size = read_image_size(args, quick ? 96 : 192, 4096);
     const int repeats = args.get_int("repeats");
     if (repeats < 1 || repeats > 100) throw usage_error("--repeats must lie in [1, 100]");
-    const std::string which = quick ? "stadium" : args.get("scene");
-    if (which != "all" && which != "stadium" && which != "bunny" && which != "sponza")
-        throw usage_error("--scene must be stadium, bunny, sponza or all, not '" + which + "'");
+    std::vector<std::string> names = read_scene_names(args, {"stadium", "bunny", "sponza"}, {"stadium", "bunny", "sponza"});
+    if (quick) names = {"stadium"};
 
     // The scenes first, so that only the files this run writes are checked before the work.
     std::vector<std::pair<std::string, scene>> scenes;
-    if (which == "all" || which == "stadium") scenes.emplace_back("stadium", builtin_scene("teapot_stadium"));
-    for (const auto& [name, file] : {std::pair{"bunny", "bunny.ply"}, std::pair{"sponza", "sponza.obj"}}) {
-        if (which != "all" && which != name) continue;
-        if (auto s = load_shared_mesh(file, name)) scenes.emplace_back(name, std::move(*s));
-    }
+    for (const std::string& name : names)
+        if (auto s = course_scene(name)) scenes.emplace_back(name, std::move(*s));
     const fs::path packets_csv = folder / "packets.csv", lanes_csv = folder / "lanes.csv", svg = folder / "vs_ch13.svg";
     std::vector<fs::path> files = {packets_csv, lanes_csv, svg};
     for (const auto& sc : scenes) files.push_back(folder / (sc.first + "_lanes.png"));

@@ -145,12 +145,11 @@ int run(int argc, const char* const* argv) {
     cli args("ch13", "Chapter 13, the wide BVH (" + std::string(track_name()) + "): chapter 05's binned SAH tree as a binary tree and "
              "collapsed into 4-, 8- and 16-wide nodes; primary, diffuse and shadow rays on one thread; Mrays/s, "
              "nodes, boxes and triangle lanes per ray, memory; a table, a CSV file and a plot.");
-    args.option("scene", "NAME", "all", "stadium, bunny, sponza or all (all: the three; the meshes where present)")
+    args.scene_option({"stadium", "bunny", "sponza"}, {"stadium", "bunny", "sponza"}, "the meshes where present")
         .option("width", "N", "", "primary rays per row (default 192, 96 with --quick)")
         .option("height", "N", "", "rows (default 3/4 of the width)")
         .option("repeats", "K", "5", "timed runs per measurement after a warm-up; the median is reported")
-        .option("out", "DIR", "", "write wide.csv and speedup.svg into DIR/ (default out/13_wide_bvh/)")
-        .flag("force", "replace existing files in a folder named with --out")
+        .output_options("write wide.csv and speedup.svg into DIR/ (default out/13_wide_bvh/)")
         .flag("quick", "the teapot in a stadium only, 96 x 72 rays, four trees");
     if (!args.parse(argc, argv)) return 0;
     const bool quick = args.has("quick");
@@ -162,20 +161,14 @@ int run(int argc, const char* const* argv) {
     const image_size size = read_image_size(args, quick ? 96 : 192, 4096);
     const int repeats = args.get_int("repeats");
     if (repeats < 1 || repeats > 100) throw usage_error("--repeats must lie in [1, 100]");
-    const std::string which = quick ? "stadium" : args.get("scene");
-    if (which != "all" && which != "stadium" && which != "bunny" && which != "sponza")
-        throw usage_error("--scene must be stadium, bunny, sponza or all, not '" + which + "'");
+    std::vector<std::string> names = read_scene_names(args, {"stadium", "bunny", "sponza"}, {"stadium", "bunny", "sponza"});
+    if (quick) names = {"stadium"};
     const thread_limit one(1);
     std::printf("SIMD in this build (lanes: backend): %s\n", ch13::simd_widths().c_str());
     std::vector<row> rows;
     const auto add = [&](const std::vector<row>& r) { rows.insert(rows.end(), r.begin(), r.end()); };
-    if (which == "all" || which == "stadium")
-        add(run_scene(builtin_scene("teapot_stadium"), "stadium", size.width, size.height, repeats, quick));
-    for (const auto& [name, file] : {std::pair{"bunny", "bunny.ply"}, std::pair{"sponza", "sponza.obj"}}) {
-        if (which != "all" && which != name) continue;
-        if (const auto s = load_shared_mesh(file, name))
-            add(run_scene(*s, name, size.width, size.height, repeats, quick));
-    }
+    for (const std::string& name : names)
+        if (const auto s = course_scene(name)) add(run_scene(*s, name, size.width, size.height, repeats, quick));
     write_table(rows, csv);
     write_plot(rows, svg);
     std::printf("wrote %s, %s\n", csv.string().c_str(), svg.string().c_str());

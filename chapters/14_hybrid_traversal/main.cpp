@@ -400,19 +400,18 @@ int run(int argc, const char* const* argv) {
              "chapter 13's 8-wide tree whose rays go on alone where the packet thins out; the threshold swept against "
              "chapter 13's single-ray walk and chapter 12's packets (primary, shadow and diffuse rays, one thread), "
              "heat maps of where rays leave, and a flight through Sponza against chapter 13 and Embree (all threads).");
-    args.option("scene", "NAME", "all", "the sweep's scenes: stadium, bunny, sponza or all (the meshes where present)")
+    args.scene_option({"stadium", "bunny", "sponza"}, {"stadium", "bunny", "sponza"}, "the sweep's scenes, the meshes where present")
         .option("width", "N", "", "the sweep's primary rays per row (default 192, 96 with --quick)")
         .option("height", "N", "", "the sweep's rows (default 3/4 of the width)")
         .option("repeats", "K", "5", "timed rounds after a warm-up round; the median is reported")
         .option("flight-frames", "N", "", "frames of the flight, 1..1000 (default 24, 4 with --quick)")
         .option("flight-width", "W", "", "the flight's image width, 1..4096 (default 400, 160 with --quick)")
         .option("flight-height", "H", "", "the flight's image height, 1..4096 (default 225, 90 with --quick)")
-        .option("threads", "N", "0", "the flight's threads, 0..1024 (0: one per core); the sweep runs on one")
-        .option("out", "DIR", "", "write sweep.csv, threshold.svg, SCENE_left.png, flight.csv, flight_first.png, "
+        .threads_option("0", "the flight's threads, 0..1024 (0: one per core); the sweep runs on one")
+        .output_options("write sweep.csv, threshold.svg, SCENE_left.png, flight.csv, flight_first.png, "
                 "flight_last.png and flight.gif into DIR/ (default out/14_hybrid_traversal/)")
         .flag("no-sweep", "skip the threshold sweep (and its heat maps)")
         .flag("no-flight", "skip the flight")
-        .flag("force", "replace existing files in a folder named with --out")
         .flag("quick", "the teapot in a stadium only: the sweep at 96 x 72 rays, a flight of 4 frames of 160 x 90");
     if (!args.parse(argc, argv)) return 0;
     const bool quick = args.has("quick"), sweep = !args.has("no-sweep"), flight = !args.has("no-flight");
@@ -423,9 +422,8 @@ int run(int argc, const char* const* argv) {
     const image_size size = read_image_size(args, quick ? 96 : 192, 4096);
     const int repeats = args.get_int("repeats");
     if (repeats < 1 || repeats > 100) throw usage_error("--repeats must lie in [1, 100]");
-    const std::string which = quick ? "stadium" : args.get("scene");
-    if (which != "all" && which != "stadium" && which != "bunny" && which != "sponza")
-        throw usage_error("--scene must be stadium, bunny, sponza or all, not '" + which + "'");
+    std::vector<std::string> names = read_scene_names(args, {"stadium", "bunny", "sponza"}, {"stadium", "bunny", "sponza"});
+    if (quick) names = {"stadium"};
     flight_options fo;
     const auto read = [&](const char* name, int quick_value, int full_value, int hi) {
         const int v = args.has(name) ? args.get_int(name) : quick ? quick_value : full_value;
@@ -440,12 +438,9 @@ int run(int argc, const char* const* argv) {
 
     // The scenes first, so that only the files this run writes are checked before the work.
     std::vector<std::pair<std::string, scene>> scenes;
-    if (sweep && (which == "all" || which == "stadium"))
-        scenes.emplace_back("stadium", builtin_scene("teapot_stadium"));
-    for (const auto& [name, file] : {std::pair{"bunny", "bunny.ply"}, std::pair{"sponza", "sponza.obj"}}) {
-        if (!sweep || (which != "all" && which != name)) continue;
-        if (auto s = load_shared_mesh(file, name)) scenes.emplace_back(name, std::move(*s));
-    }
+    if (sweep)
+        for (const std::string& name : names)
+            if (auto s = course_scene(name)) scenes.emplace_back(name, std::move(*s));
     // The flight: through Sponza where it is there (the stadium with --quick).
     std::optional<std::pair<std::string, scene>> flown;
     if (flight && !quick)

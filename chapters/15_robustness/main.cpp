@@ -390,13 +390,12 @@ int run(int argc, const char* const* argv) {
         .option("repeats", "K", "5", "timed runs per speed after a warm-up; the median is reported")
         .option("spawn-points", "N", "", "hit points per placement in the spawn test, 1000 to 10000000 (default "
                                          "200000, 1000 with --quick; a quarter of it per structure for the self-hits)")
-        .option("threads", "N", "0", "threads counting escapes and self-hits, 0..1024 (0: one per core); speeds are "
+        .threads_option("0", "threads counting escapes and self-hits, 0..1024 (0: one per core); speeds are "
                                      "always timed on one thread")
-        .option("out", "DIR", "", "write escapes.csv, spawn.csv, far.csv, scale.csv, scale.svg, table.csv and escape_vs_speed.svg into DIR/ "
+        .output_options("write escapes.csv, spawn.csv, far.csv, scale.csv, scale.svg, table.csv and escape_vs_speed.svg into DIR/ "
                                    "(default out/15_robustness/)")
         .option("from-race", "DIR", "", "only write race_ratios.csv: the same-process speed ratios of a race run "
                 "with --processes N and chapter 15's rows (DIR/processes/*/race.csv), median and range")
-        .flag("force", "replace existing files in a folder named with --out")
         .flag("quick", "the two smallest spheres, 1000 spawn points, the far-away teapot at 32 x 24 rays, the scaled teapot at 16 x 12, the teapot at 64 x 48 for the speed columns, one repeat")
         .flag("far-only", "only the teapot seen from far away: write far.csv and nothing else")
         .flag("scale-only", "only the teapot scaled from 1e-30 to 1e16: write scale.csv and scale.svg and nothing else")

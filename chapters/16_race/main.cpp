@@ -158,7 +158,7 @@ int run(int argc, const char* const* argv) {
                                       "scenes, plus ../shared/scenes meshes unless --quick)")
         .option("accels", "LIST", "", "comma-separated structures (default: all; see strahl-trace --list)")
         .option("rays", "LIST", "primary,diffuse,shadow", "ray sets")
-        .option("threads", "N", "1", "threads tracing, 1..1024 (1: the single-thread table)")
+        .threads_option("1", "threads tracing, 1..1024 (1: the single-thread table)")
         .option("width", "W", "", "image width of the ray sets, 4..8192 and divisible by 4 (default 192, quick 96; "
                                   "8192 x 8192 needs over 13 GB of memory: refused where the machine has less)")
         .option("height", "H", "", "image height, even, 2..8192 (default 144, quick 72)")

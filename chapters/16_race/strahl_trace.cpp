@@ -39,7 +39,7 @@ int run(int argc, const char* const* argv) {
         .option("rays-out", "FILE", "", "write the rays traced to this file")
         .option("out", "FILE", "", "write the hits to this file (STRAHLH1)")
         .flag("any-hit", "ask for any hit instead of the closest (shadow rays always do)")
-        .option("threads", "N", "1", "threads tracing, 1..1024 (the structure is built once)")
+        .threads_option("1", "threads tracing, 1..1024 (the structure is built once)")
         .option("repeat", "K", "1", "trace K times, report the median")
         .flag("force", "replace existing output files");
     if (!args.parse(argc, argv)) return 0;

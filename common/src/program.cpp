@@ -1,4 +1,5 @@
 #include "strahl/program.hpp"
+#include "strahl/procedural.hpp"
 #include "strahl/scene.hpp"
 #include "strahl/todo.hpp"
 #include <CLI/CLI.hpp>
@@ -77,6 +78,47 @@ cli& cli::option(const std::string& name, const std::string& value_name, const s
     entries_.push_back({name, value_name, default_value, help, false});
     parser_->app.add_option(dashed(name), help)->type_name(value_name)->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
     return *this;
+}
+
+cli& cli::output_options(const std::string& out_help) {
+    option("out", "DIR", "", out_help);
+    return flag("force", "replace existing files in a folder named with --out");
+}
+
+cli& cli::threads_option(const std::string& default_value, const std::string& help) {
+    return option("threads", "N", default_value, help);
+}
+
+namespace {
+// "a, b or c"
+std::string listed(const std::vector<std::string>& names, const std::string& last) {
+    std::string text;
+    for (std::size_t i = 0; i < names.size(); ++i) text += (i == 0 ? "" : ", ") + names[i];
+    return text + (names.empty() ? "" : " or ") + last;
+}
+}  // namespace
+
+cli& cli::scene_option(const std::vector<std::string>& offered, const std::vector<std::string>& all,
+                       const std::string& note) {
+    std::string all_text;
+    for (std::size_t i = 0; i < all.size(); ++i) all_text += (i == 0 ? "" : ", ") + all[i];
+    return option("scene", "NAME", "all", listed(offered, "all") + " (all: " + all_text + (note.empty() ? "" : "; " + note) + ")");
+}
+
+std::vector<std::string> read_scene_names(const cli& args, const std::vector<std::string>& offered,
+                                          const std::vector<std::string>& all) {
+    const std::string which = args.get("scene");
+    if (which == "all") return all;
+    if (std::find(offered.begin(), offered.end(), which) == offered.end())
+        throw usage_error("--scene must be " + listed(offered, "all") + ", not '" + which + "'");
+    return {which};
+}
+
+std::optional<scene> course_scene(const std::string& name) {
+    for (const auto& [short_name, file] : {std::pair{"bunny", "bunny.ply"}, std::pair{"armadillo", "armadillo.obj"},
+                                           std::pair{"ogre", "ogre.obj"}, std::pair{"sponza", "sponza.obj"}})
+        if (name == short_name) return load_shared_mesh(file, name);
+    return builtin_scene(name == "stadium" ? "teapot_stadium" : name);
 }
 
 const cli::entry& cli::find(const std::string& name) const {

@@ -355,6 +355,36 @@ TEST_CASE("cli: options, flags, defaults, --help and clear errors", "[common][cl
     fails({"stray"}, "unexpected argument");
 }
 
+TEST_CASE("cli: the shared options (--out with --force, --threads, --scene) and the scene names", "[common][cli]") {
+    const auto make = [] {
+        cli c("prog", "Does things.");
+        c.scene_option({"stadium", "bunny", "teapot"}, {"stadium", "bunny"}, "the meshes where present")
+            .threads_option("0", "worker threads")
+            .output_options("write x.csv into DIR/");
+        return c;
+    };
+    const auto names = [&](std::vector<const char*> args) {
+        cli c = make();
+        args.insert(args.begin(), "prog");
+        REQUIRE(c.parse(int(args.size()), args.data()));
+        return read_scene_names(c, {"stadium", "bunny", "teapot"}, {"stadium", "bunny"});
+    };
+    CHECK(names({}) == std::vector<std::string>{"stadium", "bunny"});
+    CHECK(names({"--scene", "teapot"}) == std::vector<std::string>{"teapot"});
+    CHECK_THROWS_WITH(names({"--scene", "sponza"}), Contains("--scene must be stadium, bunny, teapot or all, not 'sponza'"));
+    cli c = make();
+    CHECK_THAT(c.usage(), Contains("--scene NAME") && Contains("stadium, bunny, teapot or all (all: stadium, bunny; the "
+                                                               "meshes where present)") &&
+                              Contains("--out DIR") && Contains("--force") && Contains("--threads N"));
+    const char* argv[] = {"prog", "--out", "somewhere", "--force", "--threads", "3"};
+    REQUIRE(c.parse(6, argv));
+    CHECK(c.get("out") == "somewhere");
+    CHECK(c.has("force"));
+    CHECK(c.get_int("threads") == 3);
+    CHECK(course_scene("stadium")->name == "teapot_stadium");
+    CHECK(course_scene("teapot")->mesh.triangle_count() > 0);
+}
+
 static int throws_usage(int, const char* const*) { throw usage_error("bad flag"); }
 static int throws_todo(int, const char* const*) { STRAHL_TODO("01.2 ray/sphere"); }
 static int throws_other(int, const char* const*) { throw std::runtime_error("disk full"); }

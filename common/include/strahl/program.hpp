@@ -50,6 +50,14 @@ public:
                                                        // are numbers; 1e999 and 1e-999 are out of range)
     std::string usage() const;
 
+    // The options most programs share, in the same words everywhere: --out DIR (out_help says what goes
+    // there) with --force (replace files in a folder named with --out); --threads N (help as given, its
+    // range stated by read_threads); --scene NAME, one of `offered` or all (the names in `all`).
+    cli& output_options(const std::string& out_help);
+    cli& threads_option(const std::string& default_value, const std::string& help);
+    cli& scene_option(const std::vector<std::string>& offered, const std::vector<std::string>& all,
+                      const std::string& note = "");
+
 private:
     struct entry {
         std::string name, value_name, default_value, help;
@@ -85,6 +93,16 @@ constexpr int max_threads = 1024;
 // --threads as the programs read it: an integer in [lo, max_threads] (lo = 0 where 0 means one thread per
 // core), else usage_error naming the range and this machine's hardware threads.
 int read_threads(const cli& args, int lo);
+
+// --scene as scene_option declared it: the names chosen ("all": those in `all`, in their order), else
+// usage_error naming the choices ("--scene must be stadium, bunny, sponza or all, not 'x'").
+std::vector<std::string> read_scene_names(const cli& args, const std::vector<std::string>& offered,
+                                          const std::vector<std::string>& all);
+
+// A scene of the chapter programs by its short name: teapot, stadium (the teapot in a stadium) and the other
+// built-in scenes, or bunny, armadillo, ogre, sponza: the course's shared meshes (nothing where they are
+// absent, as load_shared_mesh says).
+std::optional<scene> course_scene(const std::string& name);
 
 // Bytes of memory this process can still use: /proc/meminfo's MemAvailable (the physical memory where
 // that is missing), or the container's memory limit (cgroup) where that is less. The environment variable
