@@ -55,16 +55,13 @@ inline bool same_tree(const ch08::binary_tree& a, const ch08::binary_tree& b) {
 }
 
 // The meshes the exactness tests walk: the teapot in a stadium, a soup of 1,500 triangles, and the bunny
-// (said where it is skipped: not beside the clone, or under the sanitizers, where brute force over its
-// 69,451 triangles would take minutes; the release run checks it).
+// (said where it is skipped: not beside the clone).
 inline std::vector<std::pair<std::string, triangle_mesh>> exactness_meshes() {
     std::vector<std::pair<std::string, triangle_mesh>> meshes = {{"teapot in a stadium", builtin_scene("teapot_stadium").mesh},
                                                                  {"soup", random_soup(1500, 3, 0.1f)}};
     const std::filesystem::path bunny = shared_scene("bunny.ply");
     if (bunny.empty())
         WARN("skipped the bunny: ../shared/scenes/bunny.ply is not beside this clone");
-    else if (under_sanitizers)
-        WARN("skipped the bunny under the sanitizers (the release run checks it)");
     else
         meshes.emplace_back("bunny", load_mesh(bunny));
     return meshes;

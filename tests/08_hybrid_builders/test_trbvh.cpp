@@ -164,7 +164,7 @@ TEST_CASE("ch08 TRBVH, ATRBVH: chapter 05's fast walk over the flattened trees e
             }, ch05::walk_kind::fast);
             a->build(test::mesh_only(mesh));
             INFO(name << ", " << r.name);
-            CHECK(test::disagreements_with_brute_force(*a, mesh, test::nasty_rays(a->tree(), test::under_sanitizers ? 300 : 2000, 7)) == 0);
+            CHECK(test::disagreements_with_brute_force(*a, mesh, test::nasty_rays(a->tree(), 2000, 7)) == 0);
         }
     }
 }

@@ -213,12 +213,10 @@ TEST_CASE("ch09 SBVH: unsplitting puts straddlers on one side at a cost no highe
 TEST_CASE("ch09 SBVH: chapter 05's fast walk over it equals brute force, on hostile inputs", "[ch09][adversarial]") {
     for (const auto& [name, mesh] : hostile_meshes())
         for (const sbvh_params& p : {with(1e-5f), with(0.0f, 3.0f)}) {
-            if (test::under_sanitizers && p.alpha == 0.0f) continue;  // (memory safety: one tree per mesh is enough)
             const auto a = make_accel(p);
             a->build(test::mesh_only(mesh));
             INFO(a->name() << " on " << name);
-            // (fewer rays under the sanitizers, which run brute force ten times slower)
-            CHECK(test::disagreements_with_brute_force(*a, mesh, test::nasty_rays(a->tree(), test::under_sanitizers ? 150 : 400, 5)) == 0);
+            CHECK(test::disagreements_with_brute_force(*a, mesh, test::nasty_rays(a->tree(), 400, 5)) == 0);
         }
 }
 
@@ -228,19 +226,16 @@ TEST_CASE("ch09 SBVH: chapter 05's fast walk over it equals brute force, on scen
     const std::filesystem::path bunny = test::shared_scene("bunny.ply");
     if (bunny.empty())
         WARN("skipped the bunny: ../shared/scenes/bunny.ply is not beside this clone");
-    else if (test::under_sanitizers)
-        WARN("skipped the bunny under the sanitizers (the release run checks it)");
     else
         meshes.emplace_back("bunny", load_mesh(bunny));
     for (const auto& [name, m] : meshes)
         for (const sbvh_params& p : {with(1e-5f), with(0.0f, 2.0f)}) {
             if (name == "bunny" && p.alpha == 0.0f) continue;  // brute force over 69,451 triangles: once is enough
-            if (test::under_sanitizers && p.alpha == 0.0f) continue;  // (memory safety: one tree per mesh is enough)
             const auto a = make_accel(p);
             a->build(test::mesh_only(m));
             INFO(a->name() << " on " << name);
             CHECK(a->report().spatial_splits > 0);
-            const std::size_t n = name == "bunny" ? 600 : test::under_sanitizers ? 500 : 2000;
+            const std::size_t n = name == "bunny" ? 600 : 2000;
             CHECK(test::disagreements_with_brute_force(*a, m, test::nasty_rays(a->tree(), n, 21)) == 0);
         }
 }
@@ -256,6 +251,6 @@ TEST_CASE("ch09 SBVH: chapter 04's own accel and traversal over it equal brute f
         });
         a->build(test::mesh_only(mesh));
         CHECK(a->tree().prim_ids.size() > mesh.triangle_count());
-        CHECK(test::disagreements_with_brute_force(*a, mesh, test::nasty_rays(a->tree(), test::under_sanitizers ? 300 : 1000, 23)) == 0);
+        CHECK(test::disagreements_with_brute_force(*a, mesh, test::nasty_rays(a->tree(), 1000, 23)) == 0);
     }
 }

@@ -22,7 +22,6 @@ using namespace strahl::ch10;
 namespace {
 
 std::vector<ray> rays_for(const aabb& box, std::uint64_t seed, std::size_t n = 1500) {
-    if (test::under_sanitizers) n /= 4;  // the release run traces them all
     test::nasty_ray_maker m(box, seed);
     std::vector<ray> rays;
     m.add_random_and_axis(rays, n);
@@ -142,7 +141,7 @@ TEST_CASE("ch10 two-level: rays grazing a stretched instance's corners need the 
         }
     };
     const float size = glm::length(transformed(square.bounds(), to_world).extent());
-    const std::size_t n = test::under_sanitizers ? 5000 : 20000;
+    const std::size_t n = 20000;
     std::vector<ray> rays;
     for (std::size_t i = 0; i < n; ++i) {
         const vec3 corner = to_world.point(square.positions[i % 4]);
@@ -314,7 +313,6 @@ TEST_CASE("ch10 two-level: the chapter's scene files read as their comments say"
     const instanced_meshes field = load_instanced(dir / "bunny_field.scene");
     CHECK(field.instances.size() == 36);
     CHECK(field.triangle_count() == 36 * field.meshes[0].triangle_count());
-    if (test::under_sanitizers) return;  // Sponza: the release run reads it
     const instanced_meshes sponza = load_instanced(dir / "sponza_teapots.scene");
     CHECK(sponza.meshes.size() == 2);
     CHECK(sponza.instances.size() == 49);

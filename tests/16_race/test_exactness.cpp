@@ -38,7 +38,6 @@ void check_exact_structures(const scene& s, int width, int height,
         ++exact_count;
         CHECK(a->name() == e.name);
         if (e.name == "brute" || e.name == e.oracle) continue;  // a reference itself
-        if (e.oracle != "brute" && test::under_sanitizers) continue;  // another brute force: the release run's
         a->build(s);
         // A structure with another oracle (brute force with chapter 15's tests) is checked against that
         // oracle's answers on the same rays.
@@ -120,10 +119,6 @@ TEST_CASE("ch16 exactness: every exact structure equals brute force on the teapo
 }
 
 TEST_CASE("ch16 exactness: every exact structure equals brute force on the bunny", "[ch16][exactness]") {
-    if (test::under_sanitizers) {
-        WARN("skipped under the sanitizers: every structure built on 69,451 triangles (the release run checks it)");
-        return;
-    }
     const std::filesystem::path file = test::shared_scene("bunny.ply");
     if (file.empty()) {
         WARN("skipped: ../shared/scenes/bunny.ply is not beside this clone");
@@ -219,7 +214,7 @@ TEST_CASE("ch16 exactness: rays with a zero or tiny direction component just bes
     const triangle_mesh m = tessellated_sphere(24, 48);
     const scene s = mesh_scene("seam", m);
     std::vector<ray> rays;
-    const int step = test::under_sanitizers ? 8 : 2;
+    const int step = 2;
     for (const uvec3& f : m.indices)
         for (int k = 0; k < 3; ++k) {
             const vec3 a = m.positions[f[k]], b = m.positions[f[(k + 1) % 3]];
@@ -238,7 +233,6 @@ TEST_CASE("ch16 exactness: rays with a zero or tiny direction component just bes
     for (const accel_entry& e : registered_accels()) {
         std::unique_ptr<accel> a = e.make();
         if (!a->exact() || e.name == e.oracle) continue;
-        if (e.oracle != "brute" && test::under_sanitizers) continue;
         if (!oracles.count(e.oracle)) {
             std::unique_ptr<accel> o = find_accel(e.oracle).make();
             o->build(s);
@@ -325,10 +319,6 @@ TEST_CASE("ch16 exactness: the course's range holds at its small edge (min_exten
 }
 
 TEST_CASE("ch16 exactness: chapter 15's combinations, found by name, equal their oracles", "[ch16][exactness]") {
-    if (test::under_sanitizers) {
-        WARN("skipped under the sanitizers (brute force with four tests; the release run checks it)");
-        return;
-    }
     std::vector<accel_entry> entries;
     for (const char* name : {"brute", "ch15-watertight-conservative", "ch15-watertight-double-fast",
                              "ch15-mt-epsilon-fast", "ch15-mt-edges-conservative", "ch15-watertight-double-conservative"}) {
@@ -413,8 +403,5 @@ TEST_CASE("ch16 exactness: every exact structure equals its oracle on an instanc
     // brute force (the race's oracle for them), which the release run checks.
     const scene s = builtin_scene("teapot_field");
     REQUIRE(s.instances);
-    if (test::under_sanitizers)
-        check_exact_structures(s, 20, 16);  // every structure on 25,600 triangles: the release run traces more
-    else
-        check_exact_structures(s, 40, 30);
+    check_exact_structures(s, 40, 30);
 }
