@@ -151,7 +151,7 @@ int run(int argc, const char* const* argv) {
     std::vector<std::string> all = {"teapot", "stadium"};
     if (!quick) all.push_back("bunny");
     if (!quick && args.has("sponza")) all.push_back("sponza");
-    const std::vector<std::string> names = read_scene_names(args, {"teapot", "stadium", "bunny", "sponza"}, all);
+    const std::vector<std::string> names = args.scene_names(all);
     const fs::path runs_path = o.folder / "runs.csv";
     prepare_output(runs_path, o.user_named, o.force);
     std::ofstream runs(runs_path);

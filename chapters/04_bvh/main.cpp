@@ -217,7 +217,7 @@ int run(int argc, const char* const* argv) {
     }
     std::vector<std::string> all = {"teapot", "stadium"};
     if (!quick) all.push_back("bunny");
-    const std::vector<std::string> names = read_scene_names(args, {"teapot", "stadium", "bunny"}, all);
+    const std::vector<std::string> names = args.scene_names(all);
     const fs::path runs_path = o.folder / "runs.csv";
     prepare_output(runs_path, o.user_named, o.force);
     std::ofstream runs(runs_path);

@@ -254,7 +254,7 @@ int run(int argc, const char* const* argv) {
         throw usage_error("--costs wants two positive numbers CT,CI, not '" + args.get("costs") + "'");
     o.costs = {ct, ci};
 
-    std::vector<std::string> names = read_scene_names(args, {"stadium", "bunny", "sponza", "teapot"}, {"stadium", "bunny", "sponza"});
+    std::vector<std::string> names = args.scene_names();
     if (quick) names = {"stadium"};
     for (const fs::path& p : {csv, trade, cost}) prepare_output(p, o.user_named, o.force);
     const thread_limit one(1);  // the chapter's figures are single-threaded, as in the race's table

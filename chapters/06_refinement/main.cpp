@@ -227,7 +227,7 @@ int run(int argc, const char* const* argv) {
     o.reinsertion_budgets =
         parse_int_list(quick && !args.has("reinsertions") ? "1,16,64" : args.get("reinsertions"), "reinsertions", 1, 10000);
 
-    std::vector<std::string> names = read_scene_names(args, {"stadium", "bunny", "sponza", "teapot"}, {"stadium", "bunny", "sponza"});
+    std::vector<std::string> names = args.scene_names();
     if (quick) names = {"stadium"};
     // Every file this run may write is checked before the work starts, not after it.
     const fs::path csv = o.folder / "refinement.csv";

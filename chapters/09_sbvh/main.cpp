@@ -255,8 +255,7 @@ int run(int argc, const char* const* argv) {
             o.alphas.push_back(a);
         }
     }
-    std::vector<std::string> names = read_scene_names(args, {"sponza", "stadium", "bunny", "armadillo"},
-                                                      {"sponza", "stadium", "bunny", "armadillo"});
+    std::vector<std::string> names = args.scene_names();
     if (quick) names = {"stadium"};
     std::vector<std::string> variants;
     if (args.has("variants")) {

@@ -230,9 +230,9 @@ int run(int argc, const char* const* argv) {
     const int glossy = args.get_int("glossy-samples");
     if (glossy < 1 || glossy > 64) throw usage_error("--glossy-samples must lie in [1, 64]");
     // all: the meshes where present, else the stadium
-    std::vector<std::string> names = read_scene_names(args, {"bunny", "sponza", "stadium"}, {"bunny", "sponza"});
+    std::vector<std::string> names = args.scene_names();
     if (quick) names = {"stadium"};
-    const bool all = names.size() > 1;
+    const bool all = !quick && args.get("scene") == "all";
     const thread_limit one(1);
     std::vector<step_row> rows;
     for (const std::string& name : names) {

@@ -161,7 +161,7 @@ int run(int argc, const char* const* argv) {
     const image_size size = read_image_size(args, quick ? 96 : 192, 4096);
     const int repeats = args.get_int("repeats");
     if (repeats < 1 || repeats > 100) throw usage_error("--repeats must lie in [1, 100]");
-    std::vector<std::string> names = read_scene_names(args, {"stadium", "bunny", "sponza"}, {"stadium", "bunny", "sponza"});
+    std::vector<std::string> names = args.scene_names();
     if (quick) names = {"stadium"};
     const thread_limit one(1);
     std::printf("SIMD in this build (lanes: backend): %s\n", ch13::simd_widths().c_str());

@@ -90,27 +90,27 @@ cli& cli::threads_option(const std::string& default_value, const std::string& he
 }
 
 namespace {
-// "a, b or c"
+// "a, b or c" (last: "c"); "a, b" where last is empty.
 std::string listed(const std::vector<std::string>& names, const std::string& last) {
     std::string text;
     for (std::size_t i = 0; i < names.size(); ++i) text += (i == 0 ? "" : ", ") + names[i];
-    return text + (names.empty() ? "" : " or ") + last;
+    return text + (names.empty() || last.empty() ? "" : " or ") + last;
 }
 }  // namespace
 
 cli& cli::scene_option(const std::vector<std::string>& offered, const std::vector<std::string>& all,
                        const std::string& note) {
-    std::string all_text;
-    for (std::size_t i = 0; i < all.size(); ++i) all_text += (i == 0 ? "" : ", ") + all[i];
-    return option("scene", "NAME", "all", listed(offered, "all") + " (all: " + all_text + (note.empty() ? "" : "; " + note) + ")");
+    scene_offered_ = offered, scene_all_ = all;
+    return option("scene", "NAME", "all", listed(offered, "all") + " (all: " + listed(all, "") + (note.empty() ? "" : "; " + note) + ")");
 }
 
-std::vector<std::string> read_scene_names(const cli& args, const std::vector<std::string>& offered,
-                                          const std::vector<std::string>& all) {
-    const std::string which = args.get("scene");
+std::vector<std::string> cli::scene_names() const { return scene_names(scene_all_); }
+
+std::vector<std::string> cli::scene_names(const std::vector<std::string>& all) const {
+    const std::string which = get("scene");
     if (which == "all") return all;
-    if (std::find(offered.begin(), offered.end(), which) == offered.end())
-        throw usage_error("--scene must be " + listed(offered, "all") + ", not '" + which + "'");
+    if (std::find(scene_offered_.begin(), scene_offered_.end(), which) == scene_offered_.end())
+        throw usage_error("--scene must be " + listed(scene_offered_, "all") + ", not '" + which + "'");
     return {which};
 }
 
@@ -141,9 +141,10 @@ bool cli::parse(int argc, const char* const* argv) {
         }
         throw usage_error(what);
     }
-    for (const std::string& extra : parser_->app.remaining()) {
-        if (extra.rfind("--", 0) != 0 || extra.size() == 2) throw usage_error("unexpected argument '" + extra + "'");
-        throw usage_error("unknown option " + extra.substr(0, extra.find('=')));
+    // The first argument CLI11 did not take: an unknown option or a stray word.
+    if (const std::vector<std::string> extra = parser_->app.remaining(); !extra.empty()) {
+        if (extra[0].rfind("--", 0) != 0 || extra[0].size() == 2) throw usage_error("unexpected argument '" + extra[0] + "'");
+        throw usage_error("unknown option " + extra[0].substr(0, extra[0].find('=')));
     }
     if (has("help")) {
         std::cout << usage();

@@ -80,7 +80,7 @@ TEST_CASE("cli: the shared options (--out with --force, --threads, --scene) and 
         cli c = make();
         args.insert(args.begin(), "prog");
         REQUIRE(c.parse(int(args.size()), args.data()));
-        return read_scene_names(c, {"stadium", "bunny", "teapot"}, {"stadium", "bunny"});
+        return c.scene_names();
     };
     CHECK(names({}) == std::vector<std::string>{"stadium", "bunny"});
     CHECK(names({"--scene", "teapot"}) == std::vector<std::string>{"teapot"});

@@ -3,7 +3,6 @@
 #pragma once
 #include <cstdint>
 #include <filesystem>
-#include <map>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -57,6 +56,11 @@ public:
     cli& threads_option(const std::string& default_value, const std::string& help);
     cli& scene_option(const std::vector<std::string>& offered, const std::vector<std::string>& all,
                       const std::string& note = "");
+    // --scene as scene_option declared it: the names chosen ("all": those in `all`, in their order; a
+    // program whose "all" depends on other options passes its own), else usage_error naming the choices
+    // ("--scene must be stadium, bunny, sponza or all, not 'x'").
+    std::vector<std::string> scene_names() const;
+    std::vector<std::string> scene_names(const std::vector<std::string>& all) const;
 
 private:
     struct entry {
@@ -68,6 +72,7 @@ private:
     std::string program_, summary_;
     std::vector<entry> entries_;
     std::unique_ptr<parser> parser_;
+    std::vector<std::string> scene_offered_, scene_all_;  // scene_option's lists
 };
 
 // Runs body(), the program's real main, and turns exceptions into one clear line on stderr and an exit code:
@@ -93,11 +98,6 @@ constexpr int max_threads = 1024;
 // --threads as the programs read it: an integer in [lo, max_threads] (lo = 0 where 0 means one thread per
 // core), else usage_error naming the range and this machine's hardware threads.
 int read_threads(const cli& args, int lo);
-
-// --scene as scene_option declared it: the names chosen ("all": those in `all`, in their order), else
-// usage_error naming the choices ("--scene must be stadium, bunny, sponza or all, not 'x'").
-std::vector<std::string> read_scene_names(const cli& args, const std::vector<std::string>& offered,
-                                          const std::vector<std::string>& all);
 
 // A scene of the chapter programs by its short name: teapot, stadium (the teapot in a stadium) and the other
 // built-in scenes, or bunny, armadillo, ogre, sponza: the course's shared meshes (nothing where they are
