@@ -129,6 +129,32 @@ TEST_CASE("ch14 hybrid: chapter 12's renderer with the hybrid tracer draws the s
     }
 }
 
+TEST_CASE("ch14 hybrid, strict: boxes tested from tmin, far fewer triangle tests for rays leaving the stadium's "
+          "field, and said to be inexact", "[ch14]") {
+    // Diffuse rays start just above the field, a fan of long flat triangles whose boxes hold the start: the
+    // exact walk tests every box from tmin - slack, so those fan triangles are tested (and missed) by every
+    // ray; the strict walk starts at tmin and skips them. Not exact by design, yet on these rays (as on the
+    // race's) its answers are brute force's: what it gives up is a triangle just behind tmin that rounding
+    // could still hit.
+    const scene s = teapot_in_stadium(4, 16);
+    const std::vector<ray> rays = test::image_rays(s, 64, 48, ch01::ray_kind::diffuse);
+    std::vector<hit> hits(rays.size());
+    for (const int t : {0, 16, automatic}) {
+        INFO("threshold " << threshold_name(t));
+        const auto exact = make_accel("exact", {16, 4, 4, 64, t});
+        const auto strict = make_accel("strict", {16, 4, 4, 64, t, true});
+        exact->build(s), strict->build(s);
+        CHECK(exact->exact());
+        CHECK_FALSE(strict->exact());
+        const std::uint64_t all = exact->closest_lanes(rays, hits, nullptr).counts.prim_tests;
+        const std::uint64_t fewer = strict->closest_lanes(rays, hits, nullptr).counts.prim_tests;
+        INFO(all << " triangle tests exact, " << fewer << " strict");
+        CHECK(fewer * 2 < all);
+        CHECK(test::disagreements_with_brute_force(*strict, s.mesh, rays) == 0);
+    }
+    CHECK_THAT(describe({16, 4, 4, 0, automatic, true}), Catch::Contains("not exact"));
+}
+
 TEST_CASE("ch14 hybrid: configurations not built are refused, naming what is", "[ch14]") {
     CHECK_THROWS_WITH(make_accel("x", {16, 8, 2, 0, 0}), Catch::Contains("built: 8 lanes 4x2"));
     CHECK_THROWS_WITH(make_accel("x", {16, 4, 4, 0, 17}), Catch::Contains("threshold 17"));

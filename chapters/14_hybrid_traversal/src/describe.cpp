@@ -9,12 +9,13 @@ std::string threshold_name(int threshold) {
 }
 
 std::string describe(const hybrid_config& c) {
+    const std::string strict = c.strict ? "; strict boxes, tested from tmin (not exact)" : "";
     const std::string s = "hybrid, " + std::to_string(c.lanes) + " lanes, " + std::to_string(c.tile_w) + "x" +
                           std::to_string(c.tile_h) + " tiles, ";
-    if (c.threshold == automatic) return s + "threshold per packet from its coherence";
-    if (c.threshold == 0) return s + "rays never leave the packet";
-    if (c.threshold == c.lanes) return s + "every ray alone from the root";
-    return s + "rays leave at <= " + std::to_string(c.threshold) + " active lanes";
+    if (c.threshold == automatic) return s + "threshold per packet from its coherence" + strict;
+    if (c.threshold == 0) return s + "rays never leave the packet" + strict;
+    if (c.threshold == c.lanes) return s + "every ray alone from the root" + strict;
+    return s + "rays leave at <= " + std::to_string(c.threshold) + " active lanes" + strict;
 }
 
 }  // namespace strahl::ch14

@@ -73,10 +73,12 @@ accel_entry packets(ch12::walk_kind walk, int lanes, int tile_w, int tile_h, int
             [name, c] { return std::unique_ptr<accel>(ch12::make_accel(name, c)); }};
 }
 // Chapter 14: the hybrid tracer, K-ray packets (tiles of the race's image) on chapter 13's 8-wide tree, rays
-// leaving for the single-ray walk at `threshold` active lanes (ch14::automatic: per packet).
-accel_entry hybrid(int lanes, int threshold, int image_width) {
-    const ch14::hybrid_config c{lanes, 4, lanes / 4, image_width, threshold};
-    const std::string name = "ch14-hybrid" + std::to_string(lanes) + "-" + ch14::threshold_name(threshold);
+// leaving for the single-ray walk at `threshold` active lanes (ch14::automatic: per packet); strict: boxes
+// tested from tmin (not exact, "-strict").
+accel_entry hybrid(int lanes, int threshold, int image_width, bool strict = false) {
+    const ch14::hybrid_config c{lanes, 4, lanes / 4, image_width, threshold, strict};
+    const std::string name = "ch14-hybrid" + std::to_string(lanes) + "-" + ch14::threshold_name(threshold) +
+                             (strict ? "-strict" : "");
     return {name, "14", ch14::describe(c) + "; chapter 13's 8-wide tree (optimal collapse, blocks of 8)",
             [name, c] { return ch14::make_accel(name, c); }};
 }
@@ -162,6 +164,7 @@ std::vector<accel_entry> registered_accels(const registry_options& o) {
         wide("ch13-bvh8-reinserted", "chapter 06's reinserted tree collapsed into 8-wide nodes (optimal), blocks of 4",
              8, 4, ch13::collapse_method::optimal, true),
         hybrid(8, ch14::automatic, o.packet_width), hybrid(16, ch14::automatic, o.packet_width),
+        hybrid(16, ch14::automatic, o.packet_width, true),
         {"ch15-mt-fast", "15", "chapter 05's binned SAH tree and fast walk, Moeller-Trumbore: chapter 15's baseline",
          [] { return ch15::make_tree(ch15::test_kind::mt, ch15::box_kind::fast); }},
         {"ch15-watertight-fast", "15", "the same tree and walk with the watertight test (Woop, Benthin and Wald 2013)",
@@ -276,13 +279,14 @@ std::optional<accel_entry> ch12_by_name(const std::string& name, const registry_
     return std::nullopt;
 }
 
-// ch14-hybridK-T for K = 8 or 16 and T = 0..K or auto; else nothing.
+// ch14-hybridK-T[-strict] for K = 8 or 16 and T = 0..K or auto; else nothing.
 std::optional<accel_entry> ch14_by_name(const std::string& name, const registry_options& o) {
     for (const int lanes : {8, 16})
-        for (int t = ch14::automatic; t <= lanes; ++t) {
-            accel_entry e = hybrid(lanes, t, o.packet_width);
-            if (e.name == name) return e;
-        }
+        for (int t = ch14::automatic; t <= lanes; ++t)
+            for (const bool strict : {false, true}) {
+                accel_entry e = hybrid(lanes, t, o.packet_width, strict);
+                if (e.name == name) return e;
+            }
     return std::nullopt;
 }
 
@@ -301,8 +305,8 @@ accel_entry find_accel(const std::string& name, const registry_options& options)
                            [] { return ch10::make_brute_accel(); }, true, name};
     throw std::invalid_argument("no structure named '" + name + "' (have: " + names +
                                 "; and ch10-brute-instanced; ch12-WALKK-WxH for chapter 12's packets (masked4-2x2, masked8-4x2, "
-                                "ranged16-16x16, partition16-8x8, wide16-... as built); ch14-hybridK-T for chapter 14's hybrid (K 8 or 16, T 0..K or "
-                                "auto); ch05-binnedK, ch05-binnedK-fast for K in 2..256; ch15-TEST-BOX and brute-TEST "
+                                "ranged16-16x16, partition16-8x8, wide16-... as built); ch14-hybridK-T[-strict] for chapter 14's hybrid (K 8 or 16, T "
+                                "0..K or auto; -strict: boxes from tmin, not exact); ch05-binnedK, ch05-binnedK-fast for K in 2..256; ch15-TEST-BOX and brute-TEST "
                                 "for chapter 15's tests mt, mt-epsilon, mt-edges, watertight, watertight-double and "
                                 "boxes plain, conservative, fast)");
 }

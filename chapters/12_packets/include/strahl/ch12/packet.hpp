@@ -168,6 +168,10 @@ struct alignas(64) ray_packet {
             refused[v] = active[v] & ~simd::movemask(ok);
         }
     }
+    // Chapter 14's strict variant: every lane's boxes tested from tmin itself (t0 = tmin, no slack below).
+    void drop_lower_slack() {
+        for (int v = 0; v < V; ++v) get(tmin, v).store(t0 + v * K);
+    }
     // Lanes that hold no ray get a copy of an active lane's terms (never active): every SIMD operation on
     // them is harmless, and the frustum's extremes are those of the active lanes. Then the octant and the
     // frustum's extremes; f: the tree the lanes' terms were made for.

@@ -71,6 +71,11 @@ public:
         : name_(std::move(name)), config_(c), policy_(policy) {}
 
     std::string name() const override { return name_; }
+    // Exact unless the policy drops the slack below tmin (chapter 14's strict variant).
+    bool exact() const override {
+        if constexpr (requires { policy_.strict; }) return !policy_.strict;
+        return true;
+    }
     const packet_config& config() const override { return config_; }
     std::size_t batch_alignment() const override {
         return config_.image_width > 0 ? std::size_t(config_.tile_h) * std::size_t(config_.image_width) : 1;
@@ -186,6 +191,8 @@ private:
             // directions the fast test refuses.
             unsigned refused[V];
             p->set_terms(box_, refused);
+            if constexpr (requires { policy_.strict; })
+                if (policy_.strict) p->drop_lower_slack();
             for (int v = 0; v < V; ++v)
                 for (unsigned b = refused[v]; b != 0; b &= b - 1) {
                     const int k = v * K + std::countr_zero(b);

@@ -19,9 +19,15 @@ struct hybrid_config {
     int tile_w = 4, tile_h = 4;  // tile_w * tile_h = K
     int image_width = 0;         // as chapter 12's packet_config
     int threshold = automatic;   // 0 .. K, or automatic
+    // Strict: boxes tested from tmin itself, not from tmin - slack (below). Not exact: a triangle whose box
+    // lies just behind tmin, which the triangle test's rounding may still hit at t >= tmin, goes untested;
+    // the rays started on a surface no longer test the flat boxes around their origin. Embree's trade; the
+    // race counts the rays that differ from brute force.
+    bool strict = false;
 };
 
-// One line: "hybrid, 16 lanes, 4x4 tiles, leave at <= 4 lanes" (or "... threshold per packet").
+// One line: "hybrid, 16 lanes, 4x4 tiles, leave at <= 4 lanes" (or "... threshold per packet"), and
+// "; strict boxes, tested from tmin (not exact)" for the strict variant.
 std::string describe(const hybrid_config& c);
 std::string threshold_name(int threshold);
 

@@ -72,6 +72,7 @@ struct hybrid_hooks {
     ch12::ray_packet<K, 1>& p;
     Stats& stats;
     int threshold;
+    bool strict = false;  // hybrid_config::strict: the lone walk tests boxes from tmin, not tmin - slack
 
     [[gnu::always_inline]] simd::vmask<K> box(const ch12::lane_rays<K>& r, const float* bmin, const float* bmax,
                                               int octant, simd::vfloat<K>& entry) const {
@@ -114,7 +115,7 @@ struct hybrid_hooks {
             return false;
         };
         constexpr auto order = Any ? ch13::visit_order::stored : ch13::visit_order::nearest;
-        ch13::wide_walk<order>(tree, s, l.slack, r, stats, leaf, ref, nearest_push<N>{});
+        ch13::wide_walk<order>(tree, s, strict ? 0.0f : l.slack, l.slack, r, stats, leaf, ref, nearest_push<N>{});
     }
 };
 
