@@ -77,6 +77,7 @@ public:
                 n.hi[a][k] = used ? t_.nodes[kids[k]].bmax[a] : -std::numeric_limits<float>::infinity();
             }
             n.child[k] = used ? refs[k] : 0;
+            n.order[k] = std::uint8_t(k);
         }
         return index;
     }

@@ -3,6 +3,7 @@
 #pragma once
 #include "strahl/accel.hpp"
 #include "strahl/ch04/accel.hpp"
+#include "strahl/ch13/child_order.hpp"
 #include "strahl/ch13/wide_bvh.hpp"
 #include <memory>
 #include <string>
@@ -15,6 +16,8 @@ struct wide_config {
     collapse_config collapse;
     bool any_hit_nearest = false;  // any hit: visit the nearest child first (as closest hit does), or the
                                    // children in stored order (the default: no sorting)
+    child_order order = child_order::collapsed;  // how nodes store their children (child_order.hpp): the
+                                                 // any-hit walk's order
     bool watertight = false;       // chapter 15's watertight test in the leaves (width 8 or 16, blocks of 4)
                                    // instead of Moeller-Trumbore
 };

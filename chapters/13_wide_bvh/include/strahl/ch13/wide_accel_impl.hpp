@@ -9,6 +9,7 @@
 #include "strahl/ch13/block_test.hpp"
 #include "strahl/ch13/wide_traverse.hpp"
 #include "strahl/tree_query.hpp"
+#include <cmath>
 #include <stdexcept>
 #include <type_traits>
 #include <vector>
@@ -56,7 +57,8 @@ template <int N, int M, bool Watertight = false>
 class wide_accel final : public per_ray_accel<wide_accel<N, M, Watertight>, wide_accel_base> {
 public:
     wide_accel(std::string name, ch04::mesh_bvh_builder builder, const wide_config& c)
-        : name_(std::move(name)), builder_(std::move(builder)), config_(c.collapse), any_nearest_(c.any_hit_nearest) {}
+        : name_(std::move(name)), builder_(std::move(builder)), config_(c.collapse), order_(c.order),
+          any_nearest_(c.any_hit_nearest) {}
 
     std::string name() const override { return name_; }
     const collapse_stats& stats() const override { return tree_.stats; }
@@ -67,6 +69,7 @@ public:
         this->set_frame(ray_frame(s.mesh.bounds()));
         binary_ = builder_(s.mesh);
         tree_ = collapse<N, M>(binary_, s.mesh, config_);
+        order_children(tree_, order_);
         if constexpr (Watertight) {
             mesh_ = s.mesh;
             lane_set_ = std::make_unique<watertight_lane_set<M>>(mesh_);
@@ -131,6 +134,9 @@ public:
                 return found;
             };
             if (any_nearest_) wide_traverse<visit_order::nearest>(tree_, r, stats, leaf);
+            // The node's own order for rays without end (camera, diffuse): measured to pay there; a segment
+            // (a shadow ray to its light) keeps the stored order, which its own measurement prefers.
+            else if (order_ != child_order::collapsed && std::isinf(r.tmax)) wide_traverse<visit_order::ranked>(tree_, r, stats, leaf);
             else wide_traverse<visit_order::stored>(tree_, r, stats, leaf);
             return found;
         };
@@ -152,6 +158,7 @@ private:
     std::string name_;
     ch04::mesh_bvh_builder builder_;
     collapse_config config_;
+    child_order order_ = child_order::collapsed;
     bool any_nearest_ = false;
     std::unique_ptr<ch01::triangle_set> set_;
     ch04::bvh binary_;

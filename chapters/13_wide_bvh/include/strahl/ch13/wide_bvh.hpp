@@ -35,21 +35,24 @@ inline constexpr std::uint32_t leaf_blocks(std::uint32_t ref) { return ((ref >> 
 
 // One node of N children, structure of arrays: each of the six box planes is a row of N floats, one SIMD
 // load. Aligned to a 64-byte cache line:
-//   N = 4:  6 x 16 bytes of planes + 16 bytes of references =  112, padded to 128 bytes (two lines);
-//   N = 8:  6 x 32 + 32                                      =  224, padded to 256 bytes (four lines);
-//   N = 16: 6 x 64 + 64                                      =  448 bytes (seven lines, no padding).
+//   N = 4:  6 x 16 bytes of planes + 16 bytes of references + 4 of order =  116, padded to 128 (two lines);
+//   N = 8:  6 x 32 + 32 + 8                                              =  232, padded to 256 (four lines);
+//   N = 16: 6 x 64 + 64 + 16                                             =  464, padded to 512 (eight lines).
 template <int N>
 struct alignas(64) wide_node {
     float lo[3][N];  // lo[axis][child]: the children's minimum corners
     float hi[3][N];  // hi[axis][child]: their maximum corners
     std::uint32_t child[N];
+    // The any-hit walk's order (child_order.hpp): order[j] is the slot of the j-th child to visit; the
+    // collapse writes 0, 1, ..., N-1 (the stored order). Closest hit ignores it.
+    std::uint8_t order[N];
 
     aabb box(int i) const {
         return {vec3(lo[0][i], lo[1][i], lo[2][i]), vec3(hi[0][i], hi[1][i], hi[2][i])};
     }
     bool used(int i) const { return lo[0][i] <= hi[0][i]; }
 };
-static_assert(sizeof(wide_node<4>) == 128 && sizeof(wide_node<8>) == 256 && sizeof(wide_node<16>) == 448);
+static_assert(sizeof(wide_node<4>) == 128 && sizeof(wide_node<8>) == 256 && sizeof(wide_node<16>) == 512);
 
 // M triangles in structure of arrays, what the leaf test needs precomputed: the first vertex and the two
 // edges e1 = v1 - v0, e2 = v2 - v0 (computed as exercise 01.3 computes them, so the test rounds the same),

@@ -153,6 +153,7 @@ enum class visit_order {
     nearest,  // closest hit: nearest entry first (exercise 13.3), so hits found early prune the rest
     stored,   // any hit: the children in the order the node stores them, no sorting: any hit ends the walk,
               // and the sort costs more than it saves (Embree's any-hit walk does not sort either)
+    ranked,   // any hit: the children in the node's own order (wide_node::order, child_order.hpp)
 };
 
 // Exercise 13.3's push, as the walk calls it.
@@ -190,6 +191,17 @@ void wide_walk(const wide_bvh<N, M>& tree, const Slab& s, float below, float sla
                 if constexpr (Order == visit_order::nearest) {
                     // Several: the nearest now, the others on the stack (exercise 13.3).
                     ref = push(bits, ts, n.child, stack, top);
+                } else if constexpr (Order == visit_order::ranked) {
+                    // Several, in the node's order: the hit bits moved to rank positions, the first ranked
+                    // now, the others on the stack, the last ranked deepest.
+                    unsigned ranked = 0;
+                    for (int j = 0; j < N; ++j) ranked |= ((bits >> n.order[j]) & 1u) << j;
+                    ref = n.child[n.order[std::countr_zero(ranked)]];
+                    for (unsigned rest = ranked & (ranked - 1); rest != 0;) {
+                        const int j = 31 - std::countl_zero(rest);
+                        stack[top++] = {n.child[n.order[j]], ts[n.order[j]]};
+                        rest &= ~(1u << j);
+                    }
                 } else {
                     // Several: the first stored now, the others on the stack, the last stored deepest.
                     ref = n.child[std::countr_zero(bits)];

@@ -1,0 +1,54 @@
+// The order in which the any-hit walk visits a wide node's children. Closest hit sorts the children a ray
+// enters by their entry distance; the any-hit walk takes them in an order fixed beforehand, and stops at the
+// first blocker: that order decides how soon it meets one.
+//
+// The collapse leaves the children in the binary tree's order (left before right, split by split), and the
+// walk's visit_order::stored takes them so. Each node also holds an order of its own (wide_node::order),
+// which visit_order::ranked follows: order_children() writes it. For
+// occlusion a better guess puts first the children most likely to end the query at least cost: leaves before
+// inner nodes (a leaf's triangles answer at once; an inner node costs a descent first), and, within each,
+// the larger box first (a ray that enters a node enters a larger child more often, and a large box of a real
+// scene often holds a wall or a floor). For rays without end: on segments (shadow rays to a light) the
+// large boxes are mostly the surfaces the segment starts from or passes by, and the stored order tests fewer
+// boxes; chapter 13's any-hit walk follows this order for rays whose tmax is infinite only (NOTES.md).
+//   T. Ize and C. Hansen, "RTSAH traversal order for occlusion rays", Computer Graphics Forum 30(2)
+//   (Eurographics) 2011 (the order by the probability of a hit and the cost to find it; this is its cheap
+//   cousin, fixed at build time, with surface area for the probability);
+//   J. D. MacDonald and K. S. Booth, "Heuristics for ray tracing using space subdivision", The Visual
+//   Computer 6(3), 1990 (surface area as the chance that a ray entering a box enters a child).
+#pragma once
+#include "strahl/ch13/wide_bvh.hpp"
+#include <algorithm>
+
+namespace strahl::ch13 {
+
+enum class child_order {
+    collapsed,         // as the collapse left them: the binary tree's order
+    leaves_then_area,  // leaves first, then inner nodes; each by decreasing surface area; unused slots last
+};
+
+// A child's rank for leaves_then_area: larger ranks first.
+template <int N>
+float any_hit_rank(const wide_node<N>& n, int i) {
+    if (!n.used(i)) return -1.0f;
+    const vec3 d = n.box(i).extent();
+    const float area = d.x * d.y + d.y * d.z + d.z * d.x;  // half the surface area: only the order counts
+    return is_leaf(n.child[i]) ? 0x1p100f + area : area;  // 2^100 over any area of a finite tree's box
+}
+
+// Writes every node's any-hit order (wide_node::order) for `order`; the children stay in their slots, so
+// closest hit (which breaks ties between equal entry distances by slot) is untouched, and every answer stays
+// the same.
+template <int N, int M>
+void order_children(wide_bvh<N, M>& tree, child_order order) {
+    for (wide_node<N>& n : tree.nodes) {
+        int slot[N];
+        float rank[N];
+        for (int i = 0; i < N; ++i) slot[i] = i, rank[i] = any_hit_rank(n, i);
+        if (order == child_order::leaves_then_area)
+            std::stable_sort(slot, slot + N, [&](int a, int b) { return rank[a] > rank[b]; });
+        for (int j = 0; j < N; ++j) n.order[j] = std::uint8_t(slot[j]);
+    }
+}
+
+}  // namespace strahl::ch13
