@@ -28,6 +28,7 @@ std::vector<hybrid_config> all_configs(int width) {
             if (k == 8 && t == 2 && !out.empty() && out.back().threshold == 2) continue;  // K/4 = 2 for K = 8
             out.push_back({k, 4, k / 4, width, t});
         }
+    for (const int k : {8, 16}) out.push_back({k, 4, k / 4, width, automatic, false, ch13::child_order::collapsed});
     return out;
 }
 

@@ -76,10 +76,11 @@ accel_entry packets(ch12::walk_kind walk, int lanes, int tile_w, int tile_h, int
 // Chapter 14: the hybrid tracer, K-ray packets (tiles of the race's image) on chapter 13's 8-wide tree, rays
 // leaving for the single-ray walk at `threshold` active lanes (ch14::automatic: per packet); strict: boxes
 // tested from tmin (not exact, "-strict").
-accel_entry hybrid(int lanes, int threshold, int image_width, bool strict = false) {
-    const ch14::hybrid_config c{lanes, 4, lanes / 4, image_width, threshold, strict};
+accel_entry hybrid(int lanes, int threshold, int image_width, bool strict = false, bool stored = false) {
+    const ch14::hybrid_config c{lanes, 4, lanes / 4, image_width, threshold, strict,
+                                stored ? ch13::child_order::collapsed : ch13::child_order::leaves_then_area};
     const std::string name = "ch14-hybrid" + std::to_string(lanes) + "-" + ch14::threshold_name(threshold) +
-                             (strict ? "-strict" : "");
+                             (strict ? "-strict" : "") + (stored ? "-stored" : "");
     return {name, "14", ch14::describe(c) + "; chapter 13's 8-wide tree (optimal collapse, blocks of 8)",
             [name, c] { return ch14::make_accel(name, c); }};
 }
@@ -283,14 +284,15 @@ std::optional<accel_entry> ch12_by_name(const std::string& name, const registry_
     return std::nullopt;
 }
 
-// ch14-hybridK-T[-strict] for K = 8 or 16 and T = 0..K or auto; else nothing.
+// ch14-hybridK-T[-strict][-stored] for K = 8 or 16 and T = 0..K or auto; else nothing.
 std::optional<accel_entry> ch14_by_name(const std::string& name, const registry_options& o) {
     for (const int lanes : {8, 16})
         for (int t = ch14::automatic; t <= lanes; ++t)
-            for (const bool strict : {false, true}) {
-                accel_entry e = hybrid(lanes, t, o.packet_width, strict);
-                if (e.name == name) return e;
-            }
+            for (const bool strict : {false, true})
+                for (const bool stored : {false, true}) {
+                    accel_entry e = hybrid(lanes, t, o.packet_width, strict, stored);
+                    if (e.name == name) return e;
+                }
     return std::nullopt;
 }
 
@@ -309,8 +311,8 @@ accel_entry find_accel(const std::string& name, const registry_options& options)
                            [] { return ch10::make_brute_accel(); }, true, name};
     throw std::invalid_argument("no structure named '" + name + "' (have: " + names +
                                 "; and ch10-brute-instanced; ch12-WALKK-WxH for chapter 12's packets (masked4-2x2, masked8-4x2, "
-                                "ranged16-16x16, partition16-8x8, wide16-... as built); ch14-hybridK-T[-strict] for chapter 14's hybrid (K 8 or 16, T "
-                                "0..K or auto; -strict: boxes from tmin, not exact); ch05-binnedK, ch05-binnedK-fast for K in 2..256; ch15-TEST-BOX and brute-TEST "
+                                "ranged16-16x16, partition16-8x8, wide16-... as built); ch14-hybridK-T[-strict][-stored] for chapter 14's hybrid (K 8 or "
+                                "16, T 0..K or auto; -strict: boxes from tmin, not exact; -stored: any hit in stored order); ch05-binnedK, ch05-binnedK-fast for K in 2..256; ch15-TEST-BOX and brute-TEST "
                                 "for chapter 15's tests mt, mt-epsilon, mt-edges, watertight, watertight-double and "
                                 "boxes plain, conservative, fast)");
 }

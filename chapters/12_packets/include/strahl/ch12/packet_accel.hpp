@@ -17,6 +17,7 @@
 #include "strahl/ch12/partition_walk.hpp"
 #include "strahl/ch12/wide_packet_walk.hpp"
 #include "strahl/ch13/wide_bvh.hpp"
+#include "strahl/ch13/child_order.hpp"
 #include "strahl/tree_query.hpp"
 #include <memory>
 
@@ -99,6 +100,8 @@ public:
             ch13::collapse_config cc;
             cc.method = ch13::collapse_method::optimal;
             wide_ = ch13::collapse<8, wide_block>(binary_, s.mesh, cc);
+            // Chapter 14's lone rays read the nodes' any-hit order (the packet walks do not).
+            if constexpr (requires { policy_.order; }) ch13::order_children(wide_, policy_.order);
         } else {
             tris_.resize(binary_.prim_ids.size());
             for (std::size_t k = 0; k < tris_.size(); ++k) {

@@ -13,6 +13,7 @@
 #include "strahl/ch12/packet.hpp"
 #include "strahl/ch13/wide_bvh.hpp"
 #include <bit>
+#include <cmath>
 
 namespace strahl::ch12 {
 
@@ -31,8 +32,8 @@ struct packet_hooks {
     static constexpr bool leave(unsigned, std::uint32_t) { return false; }
 };
 
-// Which child a node hands the walk first (chapter 13's visit_order): nearest for closest hit, stored for
-// any hit (no sorting).
+// Which child a node hands the walk first (chapter 13's visit_order): nearest for closest hit; for any hit
+// no sorting: the node's own order where no lane's ray ends, else the stored order.
 template <bool Nearest, bool Coherent, int K, int N, int M, class Stats, class Leaf, class Hooks = packet_hooks<Coherent>>
 void wide_packet_walk(const ch13::wide_bvh<N, M>& tree, ray_packet<K, 1>& p, Stats& stats, Leaf&& leaf,
                       Hooks&& hooks = {}) {
@@ -79,8 +80,17 @@ void wide_packet_walk(const ch13::wide_bvh<N, M>& tree, ray_packet<K, 1>& p, Sta
                 candidates = frustum_children<true>(p, n, bound, t0_hi, t1_lo, &covered);
                 bound.store(bounds);
             }
-            for (unsigned rest = candidates; rest != 0; rest &= rest - 1) {
-                const int c = std::countr_zero(rest);
+            // Any hit on rays without end (every lane's t1 infinite): the children in the node's own order
+            // (chapter 13's child_order.hpp; the collapse's is the stored order), the candidates' bits moved
+            // to rank positions.
+            const bool ranked = !Nearest && std::isinf(t1_lo);
+            unsigned visit = candidates;
+            if (ranked) {
+                visit = 0;
+                for (int j = 0; j < N; ++j) visit |= ((candidates >> n.order[j]) & 1u) << j;
+            }
+            for (unsigned rest = visit; rest != 0; rest &= rest - 1) {
+                const int c = ranked ? n.order[std::countr_zero(rest)] : std::countr_zero(rest);
                 if (!n.used(c)) continue;
                 if ((covered >> c) & 1u) {
                     int j = count++;

@@ -4,6 +4,7 @@
 // per-ray figure is where the ray left its packet.
 #pragma once
 #include "strahl/ch12/accel.hpp"
+#include "strahl/ch13/child_order.hpp"
 #include <memory>
 #include <string>
 
@@ -24,6 +25,9 @@ struct hybrid_config {
     // the rays started on a surface no longer test the flat boxes around their origin. Embree's trade; the
     // race counts the rays that differ from brute force.
     bool strict = false;
+    // The any-hit order of the lone walk (chapter 13's child_order.hpp): leaves first, then larger boxes, for
+    // rays without end; collapsed: the stored order for every ray ("-stored" in the race).
+    ch13::child_order order = ch13::child_order::leaves_then_area;
 };
 
 // One line: "hybrid, 16 lanes, 4x4 tiles, leave at <= 4 lanes" (or "... threshold per packet"), and

@@ -17,6 +17,7 @@
 #include "strahl/ch14/accel.hpp"
 #include "strahl/ch14/lane_slab.hpp"
 #include <bit>
+#include <cmath>
 #include <functional>
 
 namespace strahl::ch14 {
@@ -73,6 +74,7 @@ struct hybrid_hooks {
     Stats& stats;
     int threshold;
     bool strict = false;  // hybrid_config::strict: the lone walk tests boxes from tmin, not tmin - slack
+    bool ranked = false;  // any hit: rays without end visit children in the node's order (child_order.hpp)
 
     [[gnu::always_inline]] simd::vmask<K> box(const ch12::lane_rays<K>& r, const float* bmin, const float* bmax,
                                               int octant, simd::vfloat<K>& entry) const {
@@ -114,8 +116,13 @@ struct hybrid_hooks {
             }
             return false;
         };
-        constexpr auto order = Any ? ch13::visit_order::stored : ch13::visit_order::nearest;
-        ch13::wide_walk<order>(tree, s, strict ? 0.0f : l.slack, l.slack, r, stats, leaf, ref, nearest_push<N>{});
+        const float below = strict ? 0.0f : l.slack;
+        if constexpr (!Any)
+            ch13::wide_walk<ch13::visit_order::nearest>(tree, s, below, l.slack, r, stats, leaf, ref, nearest_push<N>{});
+        else if (ranked && std::isinf(r.tmax))
+            ch13::wide_walk<ch13::visit_order::ranked>(tree, s, below, l.slack, r, stats, leaf, ref, nearest_push<N>{});
+        else
+            ch13::wide_walk<ch13::visit_order::stored>(tree, s, below, l.slack, r, stats, leaf, ref, nearest_push<N>{});
     }
 };
 
