@@ -131,6 +131,29 @@ TEST_CASE("ch16 embree: agrees with brute force on the bunny", "[ch16][embree]")
     check_embree(load_scene(file), 32, 24, 1.0);
 }
 
+TEST_CASE("ch16 embree: its memory is what its device's monitor counts, the BVH with the geometry, net of what "
+          "a rebuild released", "[ch16][embree]") {
+    if (skipped_without_embree()) return;
+    const scene s = builtin_scene("teapot_stadium");
+    const std::size_t geometry = s.mesh.positions.size() * 12 + s.mesh.triangle_count() * 12;
+    for (const embree_config::quality q : {embree_config::quality::low, embree_config::quality::medium,
+                                           embree_config::quality::high}) {
+        const auto a = make_embree_accel({q, 0, 1});
+        a->build(s);
+        const std::size_t first = a->memory_bytes();
+        INFO(first << " bytes held, " << geometry << " of them the vertices and indices");
+        CHECK(first > geometry * 2);    // the BVH and its leaves besides the buffers
+        CHECK(first < geometry * 100);  // and nothing like a leak
+        a->build(s);                    // a rebuild releases the first scene: the same again, not twice as much
+        CHECK(a->memory_bytes() > first / 2);
+        CHECK(a->memory_bytes() < first * 3 / 2);
+    }
+    const auto e = make_embree_accel({});
+    scene empty;
+    e->build(empty);
+    CHECK(e->memory_bytes() < geometry);
+}
+
 TEST_CASE("ch16 embree: an empty scene misses everything", "[ch16][embree]") {
     if (skipped_without_embree()) return;
     scene empty;

@@ -28,6 +28,8 @@ const embree_report& embree_configuration() {
 #include "strahl/race/brute_force.hpp"
 #include "strahl/ch10/accel.hpp"
 #include "strahl/instancing.hpp"
+#include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <embree3/rtcore.h>
 #include <iostream>
@@ -73,6 +75,7 @@ public:
         const denormals_flushed flushed;  // (so that Embree's start-up check finds FTZ and DAZ set)
         device_ = rtcNewDevice(options.c_str());
         if (!device_) throw std::runtime_error("Embree: rtcNewDevice failed (error " + std::to_string(rtcGetDeviceError(nullptr)) + ")");
+        rtcSetDeviceMemoryMonitorFunction(device_, &embree_accel::monitor, this);
     }
     ~embree_accel() override {
         release();
@@ -110,27 +113,15 @@ public:
         instances_.reset();
         bytes_ = 0;
         vertices_ = triangles_ = 0;
-        if (config_.instanced) return build_instanced(s);
-        scene_ = rtcNewScene(device_);
-        rtcSetSceneBuildQuality(scene_, quality());
-        const std::size_t nv = s.mesh.positions.size(), nt = s.mesh.triangle_count();
-        if (nt > 0) {
-            RTCGeometry geom = triangles(s.mesh);
-            if (config_.probe) {
-                rtcSetGeometryUserData(geom, config_.probe);
-                rtcSetGeometryIntersectFilterFunction(geom, probe_filter);
-                rtcSetGeometryOccludedFilterFunction(geom, probe_filter);
-            }
-            rtcCommitGeometry(geom);
-            rtcAttachGeometry(scene_, geom);
-            rtcReleaseGeometry(geom);
-            bytes_ = nv * 12 + nt * 12;
-            vertices_ = nv, triangles_ = nt;
-        }
-        rtcCommitScene(scene_);
-        if (const RTCError e = rtcGetDeviceError(device_); e != RTC_ERROR_NONE)
-            throw std::runtime_error("Embree: building the scene failed (error " + std::to_string(int(e)) + ")");
+        const long long before = held_.load();
+        if (config_.instanced) build_instanced(s);
+        else build_plain(s);
+        bytes_ = std::size_t(std::max(0LL, held_.load() - before));
     }
+
+    // Everything Embree holds for the scene after its build, as its device's memory monitor counts it: the
+    // BVH, its leaves (Embree copies the triangles' vertices into them) and the geometry buffers it owns.
+    std::size_t memory_bytes() const override { return bytes_; }
 
     void intersect(std::span<const ray> rays, std::span<hit> hits) const override {
         const denormals_flushed flushed;
@@ -179,10 +170,34 @@ public:
         }
     }
 
-    // Embree does not say how much memory its BVH takes; this is the geometry it copied.
-    std::size_t memory_bytes() const override { return bytes_; }
-
 private:
+    // Embree's memory monitor: every allocation (bytes > 0) and release (bytes < 0) of this accel's device.
+    static bool monitor(void* self, ssize_t bytes, bool) {
+        static_cast<embree_accel*>(self)->held_.fetch_add(static_cast<long long>(bytes));
+        return true;
+    }
+
+    void build_plain(const scene& s) {
+        scene_ = rtcNewScene(device_);
+        rtcSetSceneBuildQuality(scene_, quality());
+        const std::size_t nv = s.mesh.positions.size(), nt = s.mesh.triangle_count();
+        if (nt > 0) {
+            RTCGeometry geom = triangles(s.mesh);
+            if (config_.probe) {
+                rtcSetGeometryUserData(geom, config_.probe);
+                rtcSetGeometryIntersectFilterFunction(geom, probe_filter);
+                rtcSetGeometryOccludedFilterFunction(geom, probe_filter);
+            }
+            rtcCommitGeometry(geom);
+            rtcAttachGeometry(scene_, geom);
+            rtcReleaseGeometry(geom);
+            vertices_ = nv, triangles_ = nt;
+        }
+        rtcCommitScene(scene_);
+        if (const RTCError e = rtcGetDeviceError(device_); e != RTC_ERROR_NONE)
+            throw std::runtime_error("Embree: building the scene failed (error " + std::to_string(int(e)) + ")");
+    }
+
     void release() {
         if (scene_) rtcReleaseScene(scene_);
         for (RTCScene m : mesh_scenes_) rtcReleaseScene(m);
@@ -219,7 +234,6 @@ private:
             }
             rtcCommitScene(ms);
             mesh_scenes_.push_back(ms);
-            bytes_ += m.positions.size() * 12 + m.triangle_count() * 12;
         }
         scene_ = rtcNewScene(device_);
         rtcSetSceneBuildQuality(scene_, quality());
@@ -232,7 +246,6 @@ private:
             rtcAttachGeometryByID(scene_, g, unsigned(i));
             rtcReleaseGeometry(g);
         }
-        bytes_ += instances_->instances.size() * sizeof(instance);
         rtcCommitScene(scene_);
         if (const RTCError e = rtcGetDeviceError(device_); e != RTC_ERROR_NONE)
             throw std::runtime_error("Embree: building the instanced scene failed (error " + std::to_string(int(e)) + ")");
@@ -441,7 +454,8 @@ private:
     std::size_t vertices_ = 0, triangles_ = 0;
     RTCDevice device_ = nullptr;
     RTCScene scene_ = nullptr;
-    std::size_t bytes_ = 0;
+    std::size_t bytes_ = 0;               // memory_bytes(): held_ after the build less before it
+    std::atomic<long long> held_{0};      // bytes the device holds now (monitor)
 };
 
 }  // namespace
