@@ -225,6 +225,17 @@ int run(int argc, const char* const* argv) {
             throw usage_error("--compare needs several processes: --processes N (at least " +
                               std::to_string(min_processes) + " for a verdict) or --more");
     }
+    // Every scene file there, and every built-in name known, before anything is created or traced: a missing
+    // one found after the others are loaded (or after an hour of processes) is time lost.
+    const std::vector<std::string> scenes = args.has("scenes") ? split(args.get("scenes")) : default_scenes(quick);
+    for (const std::string& spec : scenes) {
+        if (spec.starts_with("builtin:")) {
+            const std::vector<std::string> known = builtin_scene_names();
+            if (std::find(known.begin(), known.end(), spec.substr(8)) == known.end()) (void)load_scene_spec(spec);
+        } else if (!std::filesystem::exists(spec)) {
+            throw std::runtime_error(spec + ": no such file");
+        }
+    }
     // Only now, with the whole command line found good, anything is created.
     const std::filesystem::path out = args.get("out");
     prepare_output(out / "race.csv", false, false);
@@ -249,7 +260,6 @@ int run(int argc, const char* const* argv) {
     const int ref_threads = int(std::max(1u, std::thread::hardware_concurrency()));
     std::vector<race_row> rows;
     timer total;
-    const std::vector<std::string> scenes = args.has("scenes") ? split(args.get("scenes")) : default_scenes(quick);
     int cached_sets[3] = {0, 0, 0};  // brute force's answer sets: read from the cache, traced, stale
     progress_bar progress("race", scenes.size() * kinds.size() * entries.size(), "rows");
     for (const std::string& spec : scenes) {

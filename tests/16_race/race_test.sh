@@ -2,7 +2,8 @@
 # The race end to end, small: --help, a refused option, a tiny run writing its tables, plots and scene image
 # with 0 rays differing from brute force; a second run reading brute force's answers from the reference
 # cache and giving the same answers; a tampered cache file traced again and replaced; --no-cache neither
-# reading nor writing the cache; --processes 2 combining two fresh processes; a failing process.
+# reading nor writing the cache; --processes 2 combining two fresh processes; a failing process; a scene
+# file that is not there, refused before anything starts.
 # Usage: race_test.sh PATH/TO/race SCRATCH_FOLDER
 set -euo pipefail
 
@@ -19,6 +20,11 @@ runs "--help" 0 "$race" --help
 contains "$dir/out" "--no-cache" "--help"
 runs "unknown option" 2 "$race" --no-such-option
 contains "$dir/err" "unknown option --no-such-option" "unknown option"
+
+# A scene file that is not there: refused before anything is created or loaded, even with processes.
+runs "missing scene" 1 "$race" --scenes builtin:teapot,"$dir/none.ply" --out "$dir/missing" --processes 2
+contains "$dir/err" "none.ply: no such file" "missing scene"
+[[ ! -e $dir/missing ]] || fail "missing scene: the output folder was created"
 
 out=$dir/race
 tiny=(--scenes builtin:teapot --accels ch04-median,ch05-binned16-fast --width 16 --height 12 --repeats 1)
