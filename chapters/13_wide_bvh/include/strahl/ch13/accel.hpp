@@ -25,11 +25,11 @@ struct wide_config {
 // The widths this build runs with intrinsics (simd::native), for the programs' headers: "SSE2 4, AVX 8, ...".
 std::string simd_widths();
 
-// Extra access for the program and the tests: the collapse's figures.
+// Extra access for the program and the tests: the collapse's figures. (The binary tree it collapsed is not
+// kept: the wide tree and its blocks are all the structure holds.)
 class wide_accel_base : public accel {
 public:
     virtual const collapse_stats& stats() const = 0;
-    virtual const ch04::bvh& binary_tree() const = 0;  // the tree it collapsed
 };
 
 // name: the race's row name; builder: the binary tree (ch04::bvh_builder over boxes and centroids).

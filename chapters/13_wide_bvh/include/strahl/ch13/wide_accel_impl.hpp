@@ -10,6 +10,7 @@
 #include "strahl/ch13/wide_traverse.hpp"
 #include "strahl/tree_query.hpp"
 #include <cmath>
+#include <span>
 #include <stdexcept>
 #include <type_traits>
 #include <vector>
@@ -18,37 +19,92 @@ namespace strahl::ch13 {
 
 namespace {
 
-// Chapter 15's watertight test on single triangles, for what the tree does not hold (loose primitives, rays
-// no tree can place): a block whose lanes all hold the one triangle, through the lane test, so these
-// answers are the lanes' bits too.
-template <int M>
-class watertight_lane_set {
+// The leaves' triangles as the primitive set of tree_query.hpp's rules (loose primitives, and rays no tree
+// can place, which brute force answers), so that the structure keeps no second copy of its triangles: index
+// k below lanes() is lane k % M of block k / M (a lane past its leaf's end repeats the leaf's last triangle:
+// the same answer twice), index lanes() + j the j-th loose triangle (non-finite, left out of the tree, kept
+// here in a block of its own). Every test is the leaves' own block test, Moeller-Trumbore on the edges or
+// chapter 15's watertight test on the corners, on a block whose lanes all hold the one triangle: these
+// answers are the lanes' bits.
+template <int N, int M, bool Watertight>
+class block_lane_set {
 public:
-    explicit watertight_lane_set(const triangle_mesh& mesh) : mesh_(&mesh) {}
-    std::size_t size() const { return mesh_->triangle_count(); }
-    bool intersect(std::uint32_t i, ray& r, hit& best) const {
-        float t, u, v;
-        return test(i, r, t, u, v) && ch01::record_closest(i, t, u, v, r, best);
+    using block_t = std::conditional_t<Watertight, vertex_block<M>, triangle_block<M>>;
+
+    block_lane_set(const wide_bvh<N, M>& tree, const std::vector<vertex_block<M>>& corners, const triangle_mesh& mesh)
+        : tree_(&tree), corners_(&corners) {
+        for (const std::uint32_t id : tree.loose) {
+            const auto p = mesh.triangle(id);
+            block_t b;
+            for (int lane = 0; lane < M; ++lane) {
+                if constexpr (Watertight) {
+                    for (int c = 0; c < 3; ++c)
+                        for (int a = 0; a < 3; ++a) b.v[c][a][lane] = p[c][a];
+                } else {
+                    const vec3 e1 = p[1] - p[0], e2 = p[2] - p[0];  // as exercise 01.3 computes them
+                    for (int a = 0; a < 3; ++a) b.v0[a][lane] = p[0][a], b.e1[a][lane] = e1[a], b.e2[a][lane] = e2[a];
+                    b.id[lane] = id;
+                }
+            }
+            loose_indices_.push_back(std::uint32_t(lanes() + loose_.size()));
+            loose_.push_back(b);
+            loose_ids_.push_back(id);
+        }
     }
-    bool occludes(std::uint32_t i, const ray& r) const {
+    std::size_t lanes() const { return tree_->blocks.size() * M; }
+    std::size_t size() const { return lanes() + loose_.size(); }
+    // The loose triangles' indices in this set (for tree_query.hpp's loose list).
+    std::span<const std::uint32_t> loose() const { return loose_indices_; }
+    std::size_t memory_bytes() const { return loose_.size() * (sizeof(block_t) + 8); }
+
+    bool intersect(std::uint32_t k, ray& r, hit& best) const {
         float t, u, v;
-        return test(i, r, t, u, v);
+        return test(k, r, t, u, v) && ch01::record_closest(id(k), t, u, v, r, best);
+    }
+    bool occludes(std::uint32_t k, const ray& r) const {
+        float t, u, v;
+        return test(k, r, t, u, v);
     }
 
 private:
-    bool test(std::uint32_t i, const ray& r, float& t, float& u, float& v) const {
-        vertex_block<M> b;
-        const auto p = mesh_->triangle(i);
-        for (int c = 0; c < 3; ++c)
-            for (int a = 0; a < 3; ++a)
-                for (int lane = 0; lane < M; ++lane) b.v[c][a][lane] = p[c][a];
+    std::uint32_t id(std::uint32_t k) const {
+        return k < lanes() ? tree_->blocks[k / M].id[k % M] : loose_ids_[k - lanes()];
+    }
+    // Lane `lane` of block b in every lane.
+    static block_t broadcast(const block_t& b, int lane) {
+        block_t out;
+        for (int l = 0; l < M; ++l) {
+            if constexpr (Watertight) {
+                for (int c = 0; c < 3; ++c)
+                    for (int a = 0; a < 3; ++a) out.v[c][a][l] = b.v[c][a][lane];
+            } else {
+                for (int a = 0; a < 3; ++a)
+                    out.v0[a][l] = b.v0[a][lane], out.e1[a][l] = b.e1[a][lane], out.e2[a][l] = b.e2[a][lane];
+                out.id[l] = b.id[lane];
+            }
+        }
+        return out;
+    }
+    bool test(std::uint32_t k, const ray& r, float& t, float& u, float& v) const {
+        const std::size_t in = lanes();
+        const block_t b = k >= in ? loose_[k - in] : broadcast(block_source(k / M), int(k % M));
         simd::vfloat<M> tl, ul, vl;
-        if (!(simd::movemask(intersect_block_watertight(b, shear_lanes<M>(r), r.tmin, r.tmax, tl, ul, vl)) & 1u))
-            return false;
+        unsigned bits;
+        if constexpr (Watertight) bits = simd::movemask(intersect_block_watertight(b, shear_lanes<M>(r), r.tmin, r.tmax, tl, ul, vl));
+        else bits = simd::movemask(intersect_block(b, ray_lanes<M>(r), r.tmin, r.tmax, tl, ul, vl));
+        if (!(bits & 1u)) return false;
         t = tl[0], u = ul[0], v = vl[0];
         return true;
     }
-    const triangle_mesh* mesh_;
+    const block_t& block_source(std::size_t i) const {
+        if constexpr (Watertight) return (*corners_)[i];
+        else return tree_->blocks[i];
+    }
+
+    const wide_bvh<N, M>* tree_;
+    const std::vector<vertex_block<M>>* corners_;
+    std::vector<block_t> loose_;
+    std::vector<std::uint32_t> loose_ids_, loose_indices_;
 };
 
 // Watertight: the leaves' blocks tested by chapter 15's watertight test (on the corners, vertex_block),
@@ -62,17 +118,19 @@ public:
 
     std::string name() const override { return name_; }
     const collapse_stats& stats() const override { return tree_.stats; }
-    const ch04::bvh& binary_tree() const override { return binary_; }
 
+    // The binary tree is built, collapsed and dropped: the wide tree and its blocks are all the structure keeps
+    // (with the corners for the watertight test, and the few loose triangles).
     void build(const scene& s) override {
-        set_ = std::make_unique<ch01::triangle_set>(s.mesh);
+        built_ = false;
         this->set_frame(ray_frame(s.mesh.bounds()));
-        binary_ = builder_(s.mesh);
-        tree_ = collapse<N, M>(binary_, s.mesh, config_);
+        {
+            const ch04::bvh binary = builder_(s.mesh);
+            tree_ = collapse<N, M>(binary, s.mesh, config_);
+        }
         order_children(tree_, order_);
+        corners_.clear();
         if constexpr (Watertight) {
-            mesh_ = s.mesh;
-            lane_set_ = std::make_unique<watertight_lane_set<M>>(mesh_);
             corners_.resize(tree_.blocks.size());
             for (std::size_t k = 0; k < corners_.size(); ++k)
                 for (int lane = 0; lane < M; ++lane) {
@@ -81,12 +139,14 @@ public:
                         for (int a = 0; a < 3; ++a) corners_[k].v[c][a][lane] = p[c][a];
                 }
         }
+        set_ = std::make_unique<block_lane_set<N, M, Watertight>>(tree_, corners_, s.mesh);
+        built_ = true;
     }
     std::optional<double> sah_cost() const override {
-        if (!set_) return std::nullopt;
+        if (!built_) return std::nullopt;
         return tree_.stats.sah;
     }
-    // The wide tree and its blocks; the triangle set is kept for loose primitives and unplaceable rays.
+    // Everything it keeps: the wide tree and its blocks, the watertight test's corners, the loose triangles.
     std::size_t memory_bytes() const override {
         return tree_.memory_bytes() + (set_ ? set_->memory_bytes() : 0) + corners_.size() * sizeof(vertex_block<M>);
     }
@@ -94,7 +154,7 @@ public:
     // tree_query.hpp's rules (loose primitives, rays no tree can place) around the wide walk.
     template <class Stats>
     hit closest(const ray& query, Stats& stats) const {
-        if (!set_) return hit{};
+        if (!built_) return hit{};
         const auto descend = [&](ray& r, hit& best) {
             const lanes_t lanes(r);
             wide_traverse<visit_order::nearest>(tree_, r, stats, [&](std::uint32_t ref) {
@@ -114,13 +174,12 @@ public:
                 return false;
             });
         };
-        if constexpr (Watertight) return tree_closest_with(*lane_set_, tree_.loose, query, stats, descend);
-        else return tree_closest_with(*set_, tree_.loose, query, stats, descend);
+        return tree_closest_with(*set_, set_->loose(), query, stats, descend);
     }
 
     template <class Stats>
     bool any(const ray& query, Stats& stats) const {
-        if (!set_) return false;
+        if (!built_) return false;
         const auto descend = [&](ray& r) {
             const lanes_t lanes(r);
             bool found = false;
@@ -140,8 +199,7 @@ public:
             else wide_traverse<visit_order::stored>(tree_, r, stats, leaf);
             return found;
         };
-        if constexpr (Watertight) return tree_any_with(*lane_set_, tree_.loose, query, stats, descend);
-        else return tree_any_with(*set_, tree_.loose, query, stats, descend);
+        return tree_any_with(*set_, set_->loose(), query, stats, descend);
     }
 
 private:
@@ -160,13 +218,10 @@ private:
     collapse_config config_;
     child_order order_ = child_order::collapsed;
     bool any_nearest_ = false;
-    std::unique_ptr<ch01::triangle_set> set_;
-    ch04::bvh binary_;
+    bool built_ = false;
     wide_bvh<N, M> tree_;
-    // Watertight only: the corners of every block, and the single-triangle test beside the tree.
-    std::vector<vertex_block<M>> corners_;
-    triangle_mesh mesh_;
-    std::unique_ptr<watertight_lane_set<M>> lane_set_;
+    std::vector<vertex_block<M>> corners_;  // watertight only: the corners of every block
+    std::unique_ptr<block_lane_set<N, M, Watertight>> set_;  // the loose triangles and brute force's fallback
 };
 
 }  // namespace
