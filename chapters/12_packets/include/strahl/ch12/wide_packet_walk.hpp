@@ -11,6 +11,7 @@
 #include "strahl/ch12/binary_walks.hpp"
 #include "strahl/ch12/frustum_walk.hpp"
 #include "strahl/ch12/packet.hpp"
+#include "strahl/ch13/child_order.hpp"
 #include "strahl/ch13/wide_bvh.hpp"
 #include <bit>
 #include <cmath>
@@ -84,11 +85,7 @@ void wide_packet_walk(const ch13::wide_bvh<N, M>& tree, ray_packet<K, 1>& p, Sta
             // (chapter 13's child_order.hpp; the collapse's is the stored order), the candidates' bits moved
             // to rank positions.
             const bool ranked = !Nearest && std::isinf(t1_lo);
-            unsigned visit = candidates;
-            if (ranked) {
-                visit = 0;
-                for (int j = 0; j < N; ++j) visit |= ((candidates >> n.order[j]) & 1u) << j;
-            }
+            const unsigned visit = ranked ? ch13::ranked_bits(n, candidates) : candidates;
             for (unsigned rest = visit; rest != 0; rest &= rest - 1) {
                 const int c = ranked ? n.order[std::countr_zero(rest)] : std::countr_zero(rest);
                 if (!n.used(c)) continue;

@@ -4,13 +4,13 @@
 //
 // The collapse leaves the children in the binary tree's order (left before right, split by split), and the
 // walk's visit_order::stored takes them so. Each node also holds an order of its own (wide_node::order),
-// which visit_order::ranked follows: order_children() writes it. For
-// occlusion a better guess puts first the children most likely to end the query at least cost: leaves before
-// inner nodes (a leaf's triangles answer at once; an inner node costs a descent first), and, within each,
-// the larger box first (a ray that enters a node enters a larger child more often, and a large box of a real
-// scene often holds a wall or a floor). For rays without end: on segments (shadow rays to a light) the
-// large boxes are mostly the surfaces the segment starts from or passes by, and the stored order tests fewer
-// boxes; chapter 13's any-hit walk follows this order for rays whose tmax is infinite only (NOTES.md).
+// which visit_order::ranked follows and order_children() writes. For occlusion a better guess puts first
+// the children most likely to end the query at least cost: leaves before inner nodes (a leaf's triangles
+// answer at once; an inner node costs a descent first), and, within each, the larger box first (a ray that
+// enters a node enters a larger child more often, and a large box of a real scene often holds a wall or a
+// floor). That holds for rays without end; a segment (a shadow ray to its light) mostly meets large boxes
+// of the surfaces it starts from or passes by, and the stored order tests fewer boxes there, so the walks
+// follow this order only where tmax is infinite (NOTES.md).
 //   T. Ize and C. Hansen, "RTSAH traversal order for occlusion rays", Computer Graphics Forum 30(2)
 //   (Eurographics) 2011 (the order by the probability of a hit and the cost to find it; this is its cheap
 //   cousin, fixed at build time, with surface area for the probability);
@@ -36,19 +36,28 @@ float any_hit_rank(const wide_node<N>& n, int i) {
     return is_leaf(n.child[i]) ? 0x1p100f + area : area;  // 2^100 over any area of a finite tree's box
 }
 
-// Writes every node's any-hit order (wide_node::order) for `order`; the children stay in their slots, so
-// closest hit (which breaks ties between equal entry distances by slot) is untouched, and every answer stays
-// the same.
+// Writes every node's any-hit order (wide_node::order) for `order` (collapsed: the collapse already wrote
+// it). The children stay in their slots, so closest hit (which breaks ties between equal entry distances by
+// slot) is untouched, and every answer stays the same.
 template <int N, int M>
 void order_children(wide_bvh<N, M>& tree, child_order order) {
+    if (order == child_order::collapsed) return;
     for (wide_node<N>& n : tree.nodes) {
         int slot[N];
         float rank[N];
         for (int i = 0; i < N; ++i) slot[i] = i, rank[i] = any_hit_rank(n, i);
-        if (order == child_order::leaves_then_area)
-            std::stable_sort(slot, slot + N, [&](int a, int b) { return rank[a] > rank[b]; });
+        std::stable_sort(slot, slot + N, [&](int a, int b) { return rank[a] > rank[b]; });
         for (int j = 0; j < N; ++j) n.order[j] = std::uint8_t(slot[j]);
     }
+}
+
+// The bits of `slots` (a node's children by slot) moved to rank positions: bit j set where the j-th child
+// of n.order is in `slots`. The walks visit the result's bits in order, child n.order[j] for bit j.
+template <int N>
+[[gnu::always_inline]] inline unsigned ranked_bits(const wide_node<N>& n, unsigned slots) {
+    unsigned ranked = 0;
+    for (int j = 0; j < N; ++j) ranked |= ((slots >> n.order[j]) & 1u) << j;
+    return ranked;
 }
 
 }  // namespace strahl::ch13

@@ -122,7 +122,7 @@ public:
     // The binary tree is built, collapsed and dropped: the wide tree and its blocks are all the structure keeps
     // (with the corners for the watertight test, and the few loose triangles).
     void build(const scene& s) override {
-        built_ = false;
+        set_.reset();
         this->set_frame(ray_frame(s.mesh.bounds()));
         {
             const ch04::bvh binary = builder_(s.mesh);
@@ -140,10 +140,9 @@ public:
                 }
         }
         set_ = std::make_unique<block_lane_set<N, M, Watertight>>(tree_, corners_, s.mesh);
-        built_ = true;
     }
     std::optional<double> sah_cost() const override {
-        if (!built_) return std::nullopt;
+        if (!set_) return std::nullopt;
         return tree_.stats.sah;
     }
     // Everything it keeps: the wide tree and its blocks, the watertight test's corners, the loose triangles.
@@ -154,7 +153,7 @@ public:
     // tree_query.hpp's rules (loose primitives, rays no tree can place) around the wide walk.
     template <class Stats>
     hit closest(const ray& query, Stats& stats) const {
-        if (!built_) return hit{};
+        if (!set_) return hit{};
         const auto descend = [&](ray& r, hit& best) {
             const lanes_t lanes(r);
             wide_traverse<visit_order::nearest>(tree_, r, stats, [&](std::uint32_t ref) {
@@ -179,7 +178,7 @@ public:
 
     template <class Stats>
     bool any(const ray& query, Stats& stats) const {
-        if (!built_) return false;
+        if (!set_) return false;
         const auto descend = [&](ray& r) {
             const lanes_t lanes(r);
             bool found = false;
@@ -218,7 +217,6 @@ private:
     collapse_config config_;
     child_order order_ = child_order::collapsed;
     bool any_nearest_ = false;
-    bool built_ = false;
     wide_bvh<N, M> tree_;
     std::vector<vertex_block<M>> corners_;  // watertight only: the corners of every block
     std::unique_ptr<block_lane_set<N, M, Watertight>> set_;  // the loose triangles and brute force's fallback

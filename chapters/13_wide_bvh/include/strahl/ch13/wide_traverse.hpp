@@ -7,6 +7,7 @@
 #pragma once
 #include "strahl/ch04/traverse.hpp"
 #include "strahl/ch05/slab_test.hpp"
+#include "strahl/ch13/child_order.hpp"
 #include "strahl/ch13/wide_bvh.hpp"
 #include "strahl/simd.hpp"
 #include <bit>
@@ -194,8 +195,7 @@ void wide_walk(const wide_bvh<N, M>& tree, const Slab& s, float below, float sla
                 } else if constexpr (Order == visit_order::ranked) {
                     // Several, in the node's order: the hit bits moved to rank positions, the first ranked
                     // now, the others on the stack, the last ranked deepest.
-                    unsigned ranked = 0;
-                    for (int j = 0; j < N; ++j) ranked |= ((bits >> n.order[j]) & 1u) << j;
+                    const unsigned ranked = ranked_bits(n, bits);
                     ref = n.child[n.order[std::countr_zero(ranked)]];
                     for (unsigned rest = ranked & (ranked - 1); rest != 0;) {
                         const int j = 31 - std::countl_zero(rest);
