@@ -3,6 +3,7 @@
 #include "strahl/image.hpp"
 #include "strahl/procedural.hpp"
 #include "strahl/program.hpp"
+#include "strahl/huge_pages.hpp"
 #include "strahl/progress.hpp"
 #include "strahl/race/brute_force.hpp"
 #include "strahl/race/embree_accel.hpp"
@@ -179,6 +180,8 @@ int run(int argc, const char* const* argv) {
         .option("compare", "A:B,...", "", "with --processes N (at least 5) or --more: for each pair of rows, A's speed over "
                                           "B's within each process and the verdict (faster: A ahead in every process; "
                                           "slower: behind in every one; else level); writes DIR/compare.csv and compare.md")
+        .flag("plain-pages", "the course's builds allocate without advice to the kernel (no huge pages, no "
+                             "faulting in at once; strahl/huge_pages.hpp): what the advice changes")
         .flag("quick", "built-in scenes only, 96x72 rays, 3 repeats: what ./course run runs");
     if (!args.parse(argc, argv)) return 0;
     const bool quick = args.has("quick");
@@ -237,6 +240,7 @@ int run(int argc, const char* const* argv) {
         }
     }
     // Only now, with the whole command line found good, anything is created.
+    if (args.has("plain-pages")) page_advice = false;
     const std::filesystem::path out = args.get("out");
     prepare_output(out / "race.csv", false, false);
     const std::filesystem::path cache_dir = args.has("cache") ? std::filesystem::path(args.get("cache")) : out / "reference_cache";
@@ -254,6 +258,7 @@ int run(int argc, const char* const* argv) {
     if (!embree_available()) std::cout << "Embree 3 was not found at build time: the race runs without it.\n";
     else std::cout << "machine: " << machine_name() << " (Embree's queries run with flush-to-zero and "
                    << "denormals-are-zero set, as its documentation asks)\n";
+    if (args.has("plain-pages")) std::cout << "builds without page advice (--plain-pages)\n";
     std::cout << "race: " << w << "x" << h << " rays per set, " << threads << " thread" << (threads > 1 ? "s" : "")
               << ", median of " << rules.repeats << " after a warm-up (" << rules.budget_s << " s budget per query)\n";
 

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <span>
 #include <string>
 
 namespace strahl::ch13 {
@@ -62,7 +63,7 @@ public:
 
     // A wide node over the given binary nodes (at most N), each child made by make(child).
     template <class Make>
-    std::uint32_t make_node(const std::vector<std::uint32_t>& kids, Make&& make) {
+    std::uint32_t make_node(std::span<const std::uint32_t> kids, Make&& make) {
         const std::uint32_t index = std::uint32_t(out_.nodes.size());
         out_.nodes.emplace_back();
         ++out_.stats.inner;
@@ -82,24 +83,31 @@ public:
         return index;
     }
 
-    // Greedy: open the largest inner child until N children (exercise 13.1 chooses which).
-    std::uint32_t greedy(std::uint32_t i) {
-        if (leaf(i)) return make_leaf(i);
-        std::vector<std::uint32_t> kids = {left(i), right(i)};
-        while (kids.size() < std::size_t(N)) {
+    // Greedy: open the largest inner child until N children (exercise 13.1 chooses which). Writes the wide
+    // node's children (binary nodes) for inner node i; returns how many.
+    int greedy_kids(std::uint32_t i, std::uint32_t (&kids)[N]) const {
+        int count = 2;
+        kids[0] = left(i), kids[1] = right(i);
+        while (count < N) {
             float areas[N];
             bool leaves[N];
-            for (std::size_t k = 0; k < kids.size(); ++k) areas[k] = area(kids[k]), leaves[k] = leaf(kids[k]);
-            const int open = child_to_open({areas, kids.size()}, {leaves, kids.size()});
+            for (int k = 0; k < count; ++k) areas[k] = area(kids[k]), leaves[k] = leaf(kids[k]);
+            const int open = child_to_open({areas, std::size_t(count)}, {leaves, std::size_t(count)});
             if (open < 0) break;
-            if (std::size_t(open) >= kids.size() || leaves[open])
+            if (open >= count || leaves[open])
                 throw std::logic_error("child_to_open chose child " + std::to_string(open) + " of " +
-                                       std::to_string(kids.size()) + ", not an inner one");
-            const std::uint32_t opened = kids[std::size_t(open)];
-            kids[std::size_t(open)] = left(opened);
-            kids.push_back(right(opened));
+                                       std::to_string(count) + ", not an inner one");
+            const std::uint32_t opened = kids[open];
+            kids[open] = left(opened);
+            kids[count++] = right(opened);
         }
-        return make_node(kids, [&](std::uint32_t k) { return greedy(k); });
+        return count;
+    }
+    std::uint32_t greedy(std::uint32_t i) {
+        if (leaf(i)) return make_leaf(i);
+        std::uint32_t kids[N];
+        const int count = greedy_kids(i, kids);
+        return make_node({kids, std::size_t(count)}, [&](std::uint32_t k) { return greedy(k); });
     }
 
     // Optimal (Ylitie et al. 2017, with M-wide blocks): cost[i][j] is the cheapest SAH cost of binary subtree
@@ -135,7 +143,7 @@ public:
             }
             node_split_[i] = std::int8_t(best_k[N]);  // a wide node here splits its N slots so
             const float as_node = a * c_node + dist[N];
-            const float as_leaf = tris_[i] <= std::size_t(max_leaf) ? a * c_block * float((tris_[i] + M - 1) / M)
+            const float as_leaf = tris_[i] <= std::uint32_t(max_leaf) ? a * c_block * float((tris_[i] + M - 1) / M)
                                                                       : infinite_cost;
             leaf_choice_[i] = as_leaf <= as_node;
             cost_[i][1] = std::min(as_leaf, as_node);
@@ -148,28 +156,51 @@ public:
         }
     }
 
-    // The binary nodes that become the wide children of subtree i given j slots.
-    void distribute(std::uint32_t i, int j, std::vector<std::uint32_t>& kids) const {
+    // The binary nodes that become the wide children of subtree i given j slots, appended to kids[count++].
+    void distribute(std::uint32_t i, int j, std::uint32_t (&kids)[N], int& count) const {
         while (j > 1 && split_[i][j] == -1) --j;
         if (j == 1) {
-            kids.push_back(i);
+            kids[count++] = i;
             return;
         }
         const int k = split_[i][j];
-        distribute(left(i), k, kids);
-        distribute(right(i), j - k, kids);
+        distribute(left(i), k, kids, count);
+        distribute(right(i), j - k, kids, count);
+    }
+    int optimal_kids(std::uint32_t i, std::uint32_t (&kids)[N]) const {
+        int count = 0;
+        const int k = node_split_[i];
+        distribute(left(i), k, kids, count);
+        distribute(right(i), N - k, kids, count);
+        return count;
     }
 
     std::uint32_t optimal(std::uint32_t i) {
         if (leaf_choice_[i]) return make_leaf(i);
-        std::vector<std::uint32_t> kids;
-        const int k = node_split_[i];
-        distribute(left(i), k, kids);
-        distribute(right(i), N - k, kids);
-        return make_node(kids, [&](std::uint32_t c) { return optimal(c); });
+        std::uint32_t kids[N];
+        const int count = optimal_kids(i, kids);
+        return make_node({kids, std::size_t(count)}, [&](std::uint32_t c) { return optimal(c); });
+    }
+
+    // The wide tree's size before it is written: its nodes and blocks, counted along the same choices, so
+    // that each array is allocated once at its size (huge_pages.hpp fills fresh memory in one go).
+    void count(std::uint32_t i, bool greedy_method, std::size_t& nodes, std::size_t& blocks) const {
+        if (greedy_method ? leaf(i) : bool(leaf_choice_[i])) {
+            blocks += (triangles(i) + M - 1) / M;
+            return;
+        }
+        ++nodes;
+        std::uint32_t kids[N];
+        const int n = greedy_method ? greedy_kids(i, kids) : optimal_kids(i, kids);
+        for (int k = 0; k < n; ++k) count(kids[k], greedy_method, nodes, blocks);
     }
 
 private:
+    std::size_t triangles(std::uint32_t i) const {
+        if (!tris_.empty()) return tris_[i];
+        const ch04::bvh_node& n = t_.nodes[i];
+        return n.is_leaf() ? n.count : triangles(left(i)) + triangles(right(i));
+    }
     void gather(std::uint32_t i, std::vector<std::uint32_t>& ids) const {
         const ch04::bvh_node& n = t_.nodes[i];
         if (n.is_leaf()) {
@@ -183,10 +214,10 @@ private:
     const ch04::bvh& t_;
     const triangle_mesh& mesh_;
     wide_bvh<N, M>& out_;
-    std::vector<std::array<float, N + 1>> cost_;        // (float: half the memory of double, which Sponza's
-    std::vector<std::array<std::int8_t, N + 1>> split_; // 500,000 binary nodes make worth it at N = 16)
+    huge_vector<std::array<float, N + 1>> cost_;        // (float: half the memory of double, which Sponza's
+    huge_vector<std::array<std::int8_t, N + 1>> split_; // 500,000 binary nodes make worth it at N = 16)
     std::vector<std::uint32_t> scratch_;
-    std::vector<std::size_t> tris_;
+    huge_vector<std::uint32_t> tris_;
     std::vector<bool> leaf_choice_;
     std::vector<std::int8_t> node_split_;  // slots a wide node at binary node i gives its left child
 };
@@ -206,18 +237,15 @@ wide_bvh<N, M> collapse(const ch04::bvh& tree, const triangle_mesh& mesh, const 
     out.loose = tree.loose;
     if (tree.nodes.empty()) return out;
     collapser<N, M> c(tree, mesh, out);
-    out.nodes.reserve(tree.nodes.size() / std::max(1, N - 1) + 1);
-    // At most one block per binary leaf more than the triangles fill: no reallocation while collapsing.
-    std::size_t binary_leaves = 0;
-    for (const ch04::bvh_node& n : tree.nodes) binary_leaves += n.is_leaf();
-    out.blocks.reserve(tree.prim_ids.size() / M + binary_leaves);
-    if (config.method == collapse_method::greedy) {
-        out.root_ref = c.greedy(0);
-    } else {
+    const bool greedy = config.method == collapse_method::greedy;
+    if (!greedy)
         c.optimal_costs(std::clamp(config.max_leaf, 1, int(max_leaf_blocks) * M), float(config.c_node),
                         float(config.c_block));
-        out.root_ref = c.optimal(0);
-    }
+    std::size_t nodes = 0, blocks = 0;
+    c.count(0, greedy, nodes, blocks);
+    out.nodes.reserve(nodes);
+    out.blocks.reserve(blocks);
+    out.root_ref = greedy ? c.greedy(0) : c.optimal(0);
     out.stats.ms = clock.milliseconds();
     out.stats.sah = sah_of(out, config.c_node, config.c_block);
     return out;

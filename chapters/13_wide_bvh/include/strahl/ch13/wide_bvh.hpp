@@ -12,6 +12,7 @@
 #pragma once
 #include "strahl/ch04/bvh.hpp"
 #include "strahl/scene.hpp"
+#include "strahl/huge_pages.hpp"
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -84,8 +85,8 @@ struct wide_bvh {
     vec3 centre{0.0f};     // the bounds' centre and an upper bound on their diagonal's length, for the
     float diagonal = 0.0f; // per-ray slack (wide_traverse.hpp)
     std::uint32_t root_ref = 0;
-    std::vector<wide_node<N>> nodes;
-    std::vector<triangle_block<M>> blocks;
+    huge_vector<wide_node<N>> nodes;          // (huge_pages.hpp: written once, on 2 MiB pages where offered)
+    huge_vector<triangle_block<M>> blocks;
     std::vector<std::uint32_t> loose;  // primitives the binary tree left out (non-finite boxes)
     collapse_stats stats;
 

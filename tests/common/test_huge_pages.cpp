@@ -1,0 +1,77 @@
+// huge_pages.hpp: large arrays on 2 MiB boundaries, advised for transparent huge pages; small ones as before.
+#include "strahl/huge_pages.hpp"
+#include <catch2/catch.hpp>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace {
+
+constexpr std::size_t huge = std::size_t(2) << 20;
+
+// The VmFlags line of /proc/self/smaps for the mapping that holds address p ("" where none is found).
+std::string vm_flags_at(const void* p) {
+    std::ifstream smaps("/proc/self/smaps");
+    const auto a = reinterpret_cast<std::uintptr_t>(p);
+    std::string line;
+    bool inside = false;
+    while (std::getline(smaps, line)) {
+        std::uintptr_t lo = 0, hi = 0;
+        char dash = 0;
+        std::istringstream head(line);
+        if (head >> std::hex >> lo >> dash >> hi && dash == '-') inside = lo <= a && a < hi;
+        else if (inside && line.rfind("VmFlags:", 0) == 0) return line;
+    }
+    return "";
+}
+
+}  // namespace
+
+TEST_CASE("huge_vector: a large array starts on a 2 MiB boundary and holds what is written", "[huge_pages]") {
+    strahl::huge_vector<float> v(3 * huge / sizeof(float) + 5);
+    CHECK(reinterpret_cast<std::uintptr_t>(v.data()) % huge == 0);
+    for (std::size_t i = 0; i < v.size(); ++i) v[i] = float(i % 1000);
+    bool same = true;
+    for (std::size_t i = 0; i < v.size(); ++i) same = same && v[i] == float(i % 1000);
+    CHECK(same);
+    v.push_back(1.0f);  // a reallocation goes through the allocator again
+    CHECK(reinterpret_cast<std::uintptr_t>(v.data()) % huge == 0);
+    CHECK(v.back() == 1.0f);
+}
+
+TEST_CASE("huge_vector: an array of 64 KiB to 2 MiB starts on a page", "[huge_pages]") {
+    strahl::huge_vector<double> v(100000, 0.5);
+    CHECK(reinterpret_cast<std::uintptr_t>(v.data()) % 4096 == 0);
+    CHECK(v[99999] == 0.5);
+}
+
+TEST_CASE("huge_vector: small arrays come from the ordinary allocator", "[huge_pages]") {
+    strahl::huge_vector<std::uint32_t> v(100, 7u);
+    CHECK(v.size() == 100);
+    CHECK(v[99] == 7u);
+    strahl::huge_vector<std::uint32_t> w = v;
+    CHECK(w == v);
+    v.clear();
+    v.shrink_to_fit();
+    CHECK(w[0] == 7u);
+}
+
+TEST_CASE("huge_vector: Linux is asked for huge pages (the mapping carries the hg flag)", "[huge_pages]") {
+    if (!std::filesystem::exists("/sys/kernel/mm/transparent_hugepage/enabled")) {
+        WARN("no transparent huge pages on this system: the advice is not given, nothing to check");
+        return;
+    }
+    strahl::huge_vector<char> v(4 * huge, 1);
+    const std::string flags = vm_flags_at(v.data() + huge);
+    INFO("VmFlags of the array's mapping: " << flags);
+    CHECK(flags.find(" hg") != std::string::npos);
+    // Without the advice (the race's --plain-pages), the mapping does not ask.
+    strahl::page_advice = false;
+    strahl::huge_vector<char> plain(4 * huge, 1);
+    strahl::page_advice = true;
+    const std::string plain_flags = vm_flags_at(plain.data() + huge);
+    INFO("VmFlags without the advice: " << plain_flags);
+    CHECK(plain_flags.find(" hg") == std::string::npos);
+}
