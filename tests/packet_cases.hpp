@@ -9,6 +9,7 @@
 #include "strahl/ch05/slab_test.hpp"
 #include "strahl/ch12/packet.hpp"
 #include "strahl/procedural.hpp"
+#include <limits>
 #include <vector>
 
 namespace strahl::test {
@@ -78,6 +79,15 @@ inline std::vector<packet_case> packet_cases() {
     triangle_mesh flat = random_soup(500, 5, 0.1f);
     for (vec3& p : flat.positions) p.z = 0.5f;
     out.push_back({"a flat soup", mesh_only(flat), rays_for(flat), {0}});
+    // Triangles with a NaN or an infinite corner: left out of the trees (loose), so every ray is traced alone
+    // and tests them.
+    {
+        triangle_mesh m = random_soup(300, 5, 0.1f);
+        m.positions[m.indices[7][1]].x = std::numeric_limits<float>::quiet_NaN();
+        m.positions[m.indices[40][0]].y = inf;
+        m.positions[m.indices[41][2]].z = -inf;
+        out.push_back({"a soup with non-finite triangles", mesh_only(m), rays_for(m), {0}});
+    }
     // A scene far from the origin, and origins 1e9 away aimed at it (moved to the scene by ray_frame).
     {
         scene s = teapot_scene(3);

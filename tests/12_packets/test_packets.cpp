@@ -56,7 +56,7 @@ TEST_CASE("ch12 packets: every walk equals brute force on tiles of the teapot's 
 }
 
 TEST_CASE("ch12 packets: every walk equals brute force on rays made to break it, on ties, one triangle, an "
-          "empty scene, a flat soup, a far scene and far origins", "[ch12][adversarial]") {
+          "empty scene, a flat soup, non-finite triangles, a far scene and far origins", "[ch12][adversarial]") {
     for (const test::packet_case& c : test::packet_cases())
         for (const int width : c.widths) {
             INFO(c.what);

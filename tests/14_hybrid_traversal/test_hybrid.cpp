@@ -52,7 +52,7 @@ TEST_CASE("ch14 hybrid: equals brute force at every threshold on tiles of the te
     }
 }
 
-TEST_CASE("ch14 hybrid: equals brute force on rays made to break it, on ties, degenerate and far scenes",
+TEST_CASE("ch14 hybrid: equals brute force on rays made to break it, on ties, degenerate, non-finite and far scenes",
           "[ch14][adversarial]") {
     for (const test::packet_case& c : test::packet_cases())
         for (const int width : c.widths) {

@@ -1,8 +1,9 @@
 // The packet tracer behind the accel interface (accel.hpp), as a class template over the walk, K and V. Per
 // packet: each ray checked as tree_query.hpp checks it (an empty interval is a miss; loose primitives
 // first); a ray that no packet can take (not placeable, or a direction the fast slab test refuses) is traced
-// alone by chapter 05's fast walk, which gives the same answers; the others fill the lanes, and the packet
-// goes down the tree.
+// alone, by chapter 05's fast walk on the binary tree or chapter 13's walk on the wide one, which give the
+// same answers; the others fill the lanes, and the packet goes down the tree. The walks on the wide tree
+// keep only the wide tree (the binary one is dropped after the collapse, as chapter 13's accel does).
 //
 // Instantiated where the box test it inlines is defined: chapter 12's walks at the end of packet_tests.cpp
 // (exercises 12.1 to 12.3, packet_accel_impl.hpp); chapter 14's hybrid, a Policy that changes the wide
@@ -18,6 +19,7 @@
 #include "strahl/ch12/wide_packet_walk.hpp"
 #include "strahl/ch13/wide_bvh.hpp"
 #include "strahl/ch13/child_order.hpp"
+#include "strahl/ch13/wide_queries.hpp"
 #include "strahl/tree_query.hpp"
 #include <memory>
 
@@ -83,7 +85,7 @@ public:
     }
 
     void build(const scene& s) override {
-        set_ = std::make_unique<ch01::triangle_set>(s.mesh);
+        set_.reset(), lanes_.reset();
         frame_ = ray_frame(s.mesh.bounds());
         std::vector<aabb> boxes(s.mesh.triangle_count());
         std::vector<vec3> centroids(boxes.size());
@@ -94,15 +96,20 @@ public:
         ch05::sah_build_params params;
         params.method = ch05::sah_method::binned, params.bins = 16;
         binary_ = ch05::build_sah_bvh_fast(boxes, centroids, params);
-        box_ = tree_frame(binary_.bounds);
         tris_.clear();
         if constexpr (wide_tree) {
             ch13::collapse_config cc;
             cc.method = ch13::collapse_method::optimal;
             wide_ = ch13::collapse<8, wide_block>(binary_, s.mesh, cc);
+            binary_ = {};  // the wide tree and its blocks are all the wide walks read
             // Chapter 14's lone rays read the nodes' any-hit order (the packet walks do not).
             if constexpr (requires { policy_.order; }) ch13::order_children(wide_, policy_.order);
+            box_ = tree_frame(wide_.bounds);
+            static const std::vector<ch13::vertex_block<wide_block>> no_corners;
+            lanes_ = std::make_unique<lane_set>(wide_, no_corners, s.mesh);
         } else {
+            box_ = tree_frame(binary_.bounds);
+            set_ = std::make_unique<ch01::triangle_set>(s.mesh);
             tris_.resize(binary_.prim_ids.size());
             for (std::size_t k = 0; k < tris_.size(); ++k) {
                 const auto v = s.mesh.triangle(binary_.prim_ids[k]);
@@ -113,15 +120,16 @@ public:
         }
     }
     std::optional<double> sah_cost() const override {
-        if (!set_) return std::nullopt;
+        if (!built()) return std::nullopt;
         if constexpr (wide_tree) return wide_.stats.sah;
         else return ch04::sah_tree_cost(binary_, 1.0f, 1.0f);
     }
-    // The tree walked, the triangles its leaves read, and the binary tree and triangle set that single rays
-    // and loose primitives use.
+    // Everything it keeps: the wide tree and its blocks (with the few loose triangles), or the binary tree,
+    // its leaves' triangles and the triangle set that single rays and loose primitives use.
     std::size_t memory_bytes() const override {
-        return binary_.memory_bytes() + binary_.loose.size() * 4 + tris_.size() * sizeof(leaf_triangle) +
-               wide_.memory_bytes() + (set_ ? set_->memory_bytes() : 0);
+        if constexpr (wide_tree) return wide_.memory_bytes() + (lanes_ ? lanes_->memory_bytes() : 0);
+        else return binary_.memory_bytes() + binary_.loose.size() * 4 + tris_.size() * sizeof(leaf_triangle) +
+                    (set_ ? set_->memory_bytes() : 0);
     }
 
     void intersect(std::span<const ray> rays, std::span<hit> hits) const override {
@@ -162,7 +170,7 @@ private:
     template <bool Any, class Stats>
     void run(std::span<const ray> rays, hit* hits, std::uint8_t* blocked, Stats& stats, std::vector<float>* per_ray) const {
         if (per_ray) per_ray->assign(rays.size(), -1.0f);
-        if (!set_) {
+        if (!built()) {
             for (std::size_t i = 0; i < rays.size(); ++i) Any ? void(blocked[i] = 0) : void(hits[i] = hit{});
             return;
         }
@@ -182,7 +190,7 @@ private:
             if constexpr (Any) blocked[i] = single_any(rays[i], stats) ? 1 : 0;
             else hits[i] = single_closest(rays[i], stats);
         };
-        if (!binary_.loose.empty()) {
+        if (!(wide_tree ? wide_.loose.empty() : binary_.loose.empty())) {
             // Every ray of a scene with loose primitives (rare: non-finite triangles) goes alone.
             for (std::uint32_t i = 0; i < rays.size(); ++i) alone(i);
             return;
@@ -315,28 +323,48 @@ private:
         }
     }
 
-    // A ray traced alone: chapter 05's fast walk over the same binary tree (its exact answers).
+    // A ray traced alone: chapter 05's fast walk over the same binary tree, or chapter 13's walk over the
+    // same wide tree on its robust slab test (no exercise of chapter 13 in it); their answers are exact.
+    static auto block_test() {
+        return [](const ch13::triangle_block<wide_block>& b, const ch13::ray_lanes<wide_block>& lanes, float tmin,
+                  float tmax, simd::vfloat<wide_block>& t, simd::vfloat<wide_block>& u, simd::vfloat<wide_block>& v) {
+            return ch13::intersect_block(b, lanes, tmin, tmax, t, u, v);
+        };
+    }
     template <class Stats>
     hit single_closest(const ray& q, Stats& stats) const {
-        return tree_closest(*set_, binary_.loose, q, stats, [&](ray& r, auto&& leaf) {
-            ch05::fast_traverse(binary_, r, stats, [&](std::uint32_t first, std::uint32_t count) {
-                return leaf(binary_.prim_ids.data() + first, count);
+        if constexpr (wide_tree) {
+            return ch13::wide_closest<ch13::ray_lanes<wide_block>>(wide_, *lanes_, q, stats, block_test(),
+                [&](ray& r, auto&& leaf) { ch13::robust_walk(wide_, r, stats, leaf); });
+        } else {
+            return tree_closest(*set_, binary_.loose, q, stats, [&](ray& r, auto&& leaf) {
+                ch05::fast_traverse(binary_, r, stats, [&](std::uint32_t first, std::uint32_t count) {
+                    return leaf(binary_.prim_ids.data() + first, count);
+                });
             });
-        });
+        }
     }
     template <class Stats>
     bool single_any(const ray& q, Stats& stats) const {
-        return tree_any(*set_, binary_.loose, q, stats, [&](ray& r, auto&& leaf) {
-            ch05::fast_traverse(binary_, r, stats, [&](std::uint32_t first, std::uint32_t count) {
-                return leaf(binary_.prim_ids.data() + first, count);
+        if constexpr (wide_tree) {
+            return ch13::wide_any<ch13::ray_lanes<wide_block>>(wide_, *lanes_, q, stats, block_test(),
+                [&](ray& r, auto&& leaf) { ch13::robust_walk(wide_, r, stats, leaf); });
+        } else {
+            return tree_any(*set_, binary_.loose, q, stats, [&](ray& r, auto&& leaf) {
+                ch05::fast_traverse(binary_, r, stats, [&](std::uint32_t first, std::uint32_t count) {
+                    return leaf(binary_.prim_ids.data() + first, count);
+                });
             });
-        });
+        }
     }
+    bool built() const { return wide_tree ? lanes_ != nullptr : set_ != nullptr; }
 
     std::string name_;
     packet_config config_;
     Policy policy_;
-    std::unique_ptr<ch01::triangle_set> set_;
+    using lane_set = ch13::block_lane_set<8, wide_block, false>;
+    std::unique_ptr<ch01::triangle_set> set_;  // the binary walks' triangles for single rays
+    std::unique_ptr<lane_set> lanes_;          // the wide walks': the leaves' blocks, and the loose triangles
     ray_frame frame_;
     ch04::bvh binary_;
     tree_frame box_;

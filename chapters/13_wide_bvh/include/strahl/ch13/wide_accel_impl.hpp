@@ -7,8 +7,7 @@
 #include "strahl/ch01/primitive_sets.hpp"
 #include "strahl/ch13/accel.hpp"
 #include "strahl/ch13/block_test.hpp"
-#include "strahl/ch13/wide_traverse.hpp"
-#include "strahl/tree_query.hpp"
+#include "strahl/ch13/wide_queries.hpp"
 #include <cmath>
 #include <span>
 #include <stdexcept>
@@ -18,94 +17,6 @@
 namespace strahl::ch13 {
 
 namespace {
-
-// The leaves' triangles as the primitive set of tree_query.hpp's rules (loose primitives, and rays no tree
-// can place, which brute force answers), so that the structure keeps no second copy of its triangles: index
-// k below lanes() is lane k % M of block k / M (a lane past its leaf's end repeats the leaf's last triangle:
-// the same answer twice), index lanes() + j the j-th loose triangle (non-finite, left out of the tree, kept
-// here in a block of its own). Every test is the leaves' own block test, Moeller-Trumbore on the edges or
-// chapter 15's watertight test on the corners, on a block whose lanes all hold the one triangle: these
-// answers are the lanes' bits.
-template <int N, int M, bool Watertight>
-class block_lane_set {
-public:
-    using block_t = std::conditional_t<Watertight, vertex_block<M>, triangle_block<M>>;
-
-    block_lane_set(const wide_bvh<N, M>& tree, const std::vector<vertex_block<M>>& corners, const triangle_mesh& mesh)
-        : tree_(&tree), corners_(&corners) {
-        for (const std::uint32_t id : tree.loose) {
-            const auto p = mesh.triangle(id);
-            block_t b;
-            for (int lane = 0; lane < M; ++lane) {
-                if constexpr (Watertight) {
-                    for (int c = 0; c < 3; ++c)
-                        for (int a = 0; a < 3; ++a) b.v[c][a][lane] = p[c][a];
-                } else {
-                    const vec3 e1 = p[1] - p[0], e2 = p[2] - p[0];  // as exercise 01.3 computes them
-                    for (int a = 0; a < 3; ++a) b.v0[a][lane] = p[0][a], b.e1[a][lane] = e1[a], b.e2[a][lane] = e2[a];
-                    b.id[lane] = id;
-                }
-            }
-            loose_indices_.push_back(std::uint32_t(lanes() + loose_.size()));
-            loose_.push_back(b);
-            loose_ids_.push_back(id);
-        }
-    }
-    std::size_t lanes() const { return tree_->blocks.size() * M; }
-    std::size_t size() const { return lanes() + loose_.size(); }
-    // The loose triangles' indices in this set (for tree_query.hpp's loose list).
-    std::span<const std::uint32_t> loose() const { return loose_indices_; }
-    std::size_t memory_bytes() const { return loose_.size() * (sizeof(block_t) + 8); }
-
-    bool intersect(std::uint32_t k, ray& r, hit& best) const {
-        float t, u, v;
-        return test(k, r, t, u, v) && ch01::record_closest(id(k), t, u, v, r, best);
-    }
-    bool occludes(std::uint32_t k, const ray& r) const {
-        float t, u, v;
-        return test(k, r, t, u, v);
-    }
-
-private:
-    std::uint32_t id(std::uint32_t k) const {
-        return k < lanes() ? tree_->blocks[k / M].id[k % M] : loose_ids_[k - lanes()];
-    }
-    // Lane `lane` of block b in every lane.
-    static block_t broadcast(const block_t& b, int lane) {
-        block_t out;
-        for (int l = 0; l < M; ++l) {
-            if constexpr (Watertight) {
-                for (int c = 0; c < 3; ++c)
-                    for (int a = 0; a < 3; ++a) out.v[c][a][l] = b.v[c][a][lane];
-            } else {
-                for (int a = 0; a < 3; ++a)
-                    out.v0[a][l] = b.v0[a][lane], out.e1[a][l] = b.e1[a][lane], out.e2[a][l] = b.e2[a][lane];
-                out.id[l] = b.id[lane];
-            }
-        }
-        return out;
-    }
-    bool test(std::uint32_t k, const ray& r, float& t, float& u, float& v) const {
-        const std::size_t in = lanes();
-        const block_t b = k >= in ? loose_[k - in] : broadcast(block_source(k / M), int(k % M));
-        simd::vfloat<M> tl, ul, vl;
-        unsigned bits;
-        if constexpr (Watertight) bits = simd::movemask(intersect_block_watertight(b, shear_lanes<M>(r), r.tmin, r.tmax, tl, ul, vl));
-        else bits = simd::movemask(intersect_block(b, ray_lanes<M>(r), r.tmin, r.tmax, tl, ul, vl));
-        if (!(bits & 1u)) return false;
-        t = tl[0], u = ul[0], v = vl[0];
-        return true;
-    }
-    const block_t& block_source(std::size_t i) const {
-        if constexpr (Watertight) return (*corners_)[i];
-        else return tree_->blocks[i];
-    }
-
-    const wide_bvh<N, M>* tree_;
-    const std::vector<vertex_block<M>>* corners_;
-    std::vector<block_t> loose_;
-    std::vector<std::uint32_t> loose_ids_, loose_indices_;
-};
 
 // Watertight: the leaves' blocks tested by chapter 15's watertight test (on the corners, vertex_block),
 // else by Moeller-Trumbore (on the edges, triangle_block).
@@ -150,66 +61,38 @@ public:
         return tree_.memory_bytes() + (set_ ? set_->memory_bytes() : 0) + corners_.size() * sizeof(vertex_block<M>);
     }
 
-    // tree_query.hpp's rules (loose primitives, rays no tree can place) around the wide walk.
+    // tree_query.hpp's rules (loose primitives, rays no tree can place) around the wide walk
+    // (wide_queries.hpp).
     template <class Stats>
     hit closest(const ray& query, Stats& stats) const {
         if (!set_) return hit{};
-        const auto descend = [&](ray& r, hit& best) {
-            const lanes_t lanes(r);
-            wide_traverse<visit_order::nearest>(tree_, r, stats, [&](std::uint32_t ref) {
-                const triangle_block<M>* b = &tree_.blocks[leaf_first(ref)];
-                for (std::uint32_t k = leaf_blocks(ref); k-- > 0; ++b) {
-                    stats.prim_test(M);
-                    simd::vfloat<M> t, u, v;
-                    unsigned bits = simd::movemask(test_block(*b, lanes, r.tmin, r.tmax, t, u, v));
-                    if (bits == 0) continue;
-                    alignas(64) float ts[M], us[M], vs[M];
-                    t.store(ts), u.store(us), v.store(vs);
-                    for (; bits != 0; bits &= bits - 1) {
-                        const int i = std::countr_zero(bits);
-                        ch01::record_closest(b->id[i], ts[i], us[i], vs[i], r, best);
-                    }
-                }
-                return false;
-            });
-        };
-        return tree_closest_with(*set_, set_->loose(), query, stats, descend);
+        return wide_closest<lanes_t>(tree_, *set_, query, stats, block_test(), [&](ray& r, auto&& leaf) {
+            wide_traverse<visit_order::nearest>(tree_, r, stats, leaf);
+        });
     }
 
     template <class Stats>
     bool any(const ray& query, Stats& stats) const {
         if (!set_) return false;
-        const auto descend = [&](ray& r) {
-            const lanes_t lanes(r);
-            bool found = false;
-            const auto leaf = [&](std::uint32_t ref) {
-                const triangle_block<M>* b = &tree_.blocks[leaf_first(ref)];
-                for (std::uint32_t k = leaf_blocks(ref); k-- > 0 && !found; ++b) {
-                    stats.prim_test(M);
-                    simd::vfloat<M> t, u, v;
-                    found = simd::any(test_block(*b, lanes, r.tmin, r.tmax, t, u, v));
-                }
-                return found;
-            };
+        return wide_any<lanes_t>(tree_, *set_, query, stats, block_test(), [&](ray& r, auto&& leaf) {
             if (any_nearest_) wide_traverse<visit_order::nearest>(tree_, r, stats, leaf);
             // The node's own order for rays without end (camera, diffuse): measured to pay there; a segment
             // (a shadow ray to its light) keeps the stored order, which its own measurement prefers.
             else if (order_ != child_order::collapsed && std::isinf(r.tmax)) wide_traverse<visit_order::ranked>(tree_, r, stats, leaf);
             else wide_traverse<visit_order::stored>(tree_, r, stats, leaf);
-            return found;
-        };
-        return tree_any_with(*set_, set_->loose(), query, stats, descend);
+        });
     }
 
 private:
     using lanes_t = std::conditional_t<Watertight, shear_lanes<M>, ray_lanes<M>>;
     // The block test: Moeller-Trumbore on block b, or the watertight test on its corners.
-    [[gnu::always_inline]] simd::vmask<M> test_block(const triangle_block<M>& b, const lanes_t& lanes, float tmin,
-                                                    float tmax, simd::vfloat<M>& t, simd::vfloat<M>& u,
-                                                    simd::vfloat<M>& v) const {
-        if constexpr (Watertight)
-            return intersect_block_watertight(corners_[std::size_t(&b - tree_.blocks.data())], lanes, tmin, tmax, t, u, v);
-        else return intersect_block(b, lanes, tmin, tmax, t, u, v);
+    auto block_test() const {
+        return [this](const triangle_block<M>& b, const lanes_t& lanes, float tmin, float tmax, simd::vfloat<M>& t,
+                      simd::vfloat<M>& u, simd::vfloat<M>& v) {
+            if constexpr (Watertight)
+                return intersect_block_watertight(corners_[std::size_t(&b - tree_.blocks.data())], lanes, tmin, tmax, t, u, v);
+            else return intersect_block(b, lanes, tmin, tmax, t, u, v);
+        };
     }
 
     std::string name_;
