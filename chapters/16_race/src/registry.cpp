@@ -84,6 +84,15 @@ accel_entry hybrid(int lanes, int threshold, int image_width, bool strict = fals
     return {name, "14", ch14::describe(c) + "; chapter 13's 8-wide tree (optimal collapse, blocks of 8)",
             [name, c] { return ch14::make_accel(name, c); }};
 }
+// The course's final tracer, one named row: chapter 14's hybrid as ch14-hybrid16-auto builds it (chapter 05's
+// binned SAH tree, chosen for its build time, collapsed SAH-optimally into chapter 13's 8-wide nodes with
+// blocks of 8; any hit leaves first).
+accel_entry final_tracer(int image_width) {
+    const ch14::hybrid_config c{16, 4, 4, image_width, ch14::automatic, false, ch13::child_order::leaves_then_area};
+    return {"final", "14", "the course's final tracer: " + ch14::describe(c) + "; chapter 05's binned SAH tree, "
+            "collapsed optimally into chapter 13's 8-wide nodes, blocks of 8",
+            [c] { return ch14::make_accel("final", c); }};
+}
 // Chapter 13's wide walk over another chapter's tree: N-wide nodes (optimal collapse), blocks of M.
 ch13::wide_config wide_optimal(int width, int block) {
     ch13::wide_config c;
@@ -169,7 +178,7 @@ std::vector<accel_entry> registered_accels(const registry_options& o) {
         wide("ch13-bvh8-reinserted", "chapter 06's reinserted tree collapsed into 8-wide nodes (optimal), blocks of 4",
              8, 4, ch13::collapse_method::optimal, true),
         hybrid(8, ch14::automatic, o.packet_width), hybrid(16, ch14::automatic, o.packet_width),
-        hybrid(16, ch14::automatic, o.packet_width, true),
+        hybrid(16, ch14::automatic, o.packet_width, true), final_tracer(o.packet_width),
         {"ch15-mt-fast", "15", "chapter 05's binned SAH tree and fast walk, Moeller-Trumbore: chapter 15's baseline",
          [] { return ch15::make_tree(ch15::test_kind::mt, ch15::box_kind::fast); }},
         {"ch15-watertight-fast", "15", "the same tree and walk with the watertight test (Woop, Benthin and Wald 2013)",

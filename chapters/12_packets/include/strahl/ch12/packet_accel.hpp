@@ -324,7 +324,9 @@ private:
     }
 
     // A ray traced alone: chapter 05's fast walk over the same binary tree, or chapter 13's walk over the
-    // same wide tree on its robust slab test (no exercise of chapter 13 in it); their answers are exact.
+    // same wide tree on its robust slab test (no exercise of chapter 13 in it); their answers are exact. Out
+    // of line: these are the rare rays; inlined into trace() they slowed the packets themselves (the
+    // hybrid's diffuse rays on the bunny 4.94 against 6.06 Mrays/s out of line, race, three processes).
     static auto block_test() {
         return [](const ch13::triangle_block<wide_block>& b, const ch13::ray_lanes<wide_block>& lanes, float tmin,
                   float tmax, simd::vfloat<wide_block>& t, simd::vfloat<wide_block>& u, simd::vfloat<wide_block>& v) {
@@ -332,7 +334,7 @@ private:
         };
     }
     template <class Stats>
-    hit single_closest(const ray& q, Stats& stats) const {
+    [[gnu::noinline]] hit single_closest(const ray& q, Stats& stats) const {
         if constexpr (wide_tree) {
             return ch13::wide_closest<ch13::ray_lanes<wide_block>>(wide_, *lanes_, q, stats, block_test(),
                 [&](ray& r, auto&& leaf) { ch13::robust_walk(wide_, r, stats, leaf); });
@@ -345,7 +347,7 @@ private:
         }
     }
     template <class Stats>
-    bool single_any(const ray& q, Stats& stats) const {
+    [[gnu::noinline]] bool single_any(const ray& q, Stats& stats) const {
         if constexpr (wide_tree) {
             return ch13::wide_any<ch13::ray_lanes<wide_block>>(wide_, *lanes_, q, stats, block_test(),
                 [&](ray& r, auto&& leaf) { ch13::robust_walk(wide_, r, stats, leaf); });
