@@ -11,12 +11,14 @@
 //     faulted in by one call, before the build writes it, instead of one trap per page.
 // Both are advice: where the kernel refuses, the memory works as before. Populating touches the whole
 // allocation, so an array should be allocated at the size it will fill (reserve the exact count, not a
-// bound). Arrays under 64 KiB come from the ordinary allocator; larger ones are aligned to 4 KiB (2 MiB
-// from 2 MiB on) and rounded up to a multiple of that.
+// bound). Arrays under 64 KiB come from the ordinary allocator; larger ones are rounded up to 4 KiB pages
+// and aligned to one (to 2 MiB from 2 MiB on); their whole 2 MiB stretches get huge pages, the rest 4 KiB
+// ones, so that the memory they hold is their size.
 #pragma once
 #include <atomic>
 #include <cstddef>
 #include <cstdlib>
+#include <stdlib.h>
 #include <memory>
 #include <new>
 #include <vector>
@@ -46,15 +48,18 @@ struct huge_page_allocator {
     T* allocate(std::size_t n) {
         if (!large(n)) return std::allocator<T>{}.allocate(n);
         if (n > (std::size_t(-1) - huge_page) / sizeof(T)) throw std::bad_array_new_length();
-        const std::size_t align = n * sizeof(T) >= huge_page ? huge_page : page;
-        const std::size_t bytes = (n * sizeof(T) + align - 1) & ~(align - 1);
-        void* p = std::aligned_alloc(align, bytes);
-        if (p == nullptr) throw std::bad_alloc();
+        // The array's own pages (rounded up to 4 KiB), starting on a 2 MiB boundary when it spans one.
+        const std::size_t bytes = (n * sizeof(T) + page - 1) & ~(page - 1);
+        const std::size_t align = bytes >= huge_page ? huge_page : page;
+        void* p = nullptr;
+        if (::posix_memalign(&p, align, bytes) != 0) throw std::bad_alloc();
 #if defined(__linux__)
         if (!page_advice.load(std::memory_order_relaxed)) return static_cast<T*>(p);
         // Advice only: where the kernel refuses (an older one, no THP), the pages come one fault at a time.
+        // Huge pages for the whole 2 MiB stretches only: the tail stays on 4 KiB pages, so the memory held
+        // is the array's (a huge page over the tail would hold up to 2 MiB more).
 #if defined(MADV_HUGEPAGE)
-        if (align == huge_page) ::madvise(p, bytes, MADV_HUGEPAGE);
+        if (bytes >= huge_page) ::madvise(p, bytes & ~(huge_page - 1), MADV_HUGEPAGE);
 #endif
 #if defined(MADV_POPULATE_WRITE)
         ::madvise(p, bytes, MADV_POPULATE_WRITE);
