@@ -11,42 +11,40 @@ namespace {
 
 constexpr std::size_t huge = std::size_t(2) << 20;
 
-// The VmFlags line of /proc/self/smaps for the mapping that holds address p ("" where none is found).
-std::string vm_flags_at(const void* p) {
-    std::ifstream smaps("/proc/self/smaps");
-    const auto a = reinterpret_cast<std::uintptr_t>(p);
-    std::string line;
-    bool inside = false;
-    while (std::getline(smaps, line)) {
-        std::uintptr_t lo = 0, hi = 0;
-        char dash = 0;
-        std::istringstream head(line);
-        if (head >> std::hex >> lo >> dash >> hi && dash == '-') inside = lo <= a && a < hi;
-        else if (inside && line.rfind("VmFlags:", 0) == 0) return line;
-    }
-    return "";
-}
-
-// The resident bytes (smaps' Rss) of the mappings that overlap [p, p + bytes).
-std::size_t resident_bytes(const void* p, std::size_t bytes) {
+// Calls f(line) for each line of /proc/self/smaps that describes a mapping overlapping [p, p + bytes).
+template <class F>
+void for_mappings(const void* p, std::size_t bytes, F&& f) {
     std::ifstream smaps("/proc/self/smaps");
     const auto a = reinterpret_cast<std::uintptr_t>(p), b = a + bytes;
     std::string line;
     bool overlaps = false;
-    std::size_t kib = 0;
     while (std::getline(smaps, line)) {
         std::uintptr_t lo = 0, hi = 0;
         char dash = 0;
         std::istringstream head(line);
-        if (head >> std::hex >> lo >> dash >> hi && dash == '-') {
-            overlaps = lo < b && a < hi;
-        } else if (overlaps && line.rfind("Rss:", 0) == 0) {
-            std::istringstream value(line.substr(4));
-            std::size_t k = 0;
-            value >> k;
-            kib += k;
-        }
+        if (head >> std::hex >> lo >> dash >> hi && dash == '-') overlaps = lo < b && a < hi;
+        else if (overlaps) f(line);
     }
+}
+
+// The VmFlags line of the mapping that holds address p ("" where none is found).
+std::string vm_flags_at(const void* p) {
+    std::string flags;
+    for_mappings(p, 1, [&](const std::string& line) {
+        if (line.rfind("VmFlags:", 0) == 0) flags = line;
+    });
+    return flags;
+}
+
+// The resident bytes (smaps' Rss) of the mappings that overlap [p, p + bytes).
+std::size_t resident_bytes(const void* p, std::size_t bytes) {
+    std::size_t kib = 0;
+    for_mappings(p, bytes, [&](const std::string& line) {
+        if (line.rfind("Rss:", 0) != 0) return;
+        std::size_t k = 0;
+        std::istringstream(line.substr(4)) >> k;
+        kib += k;
+    });
     return kib * 1024;
 }
 

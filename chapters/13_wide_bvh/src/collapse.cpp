@@ -196,11 +196,9 @@ public:
     }
 
 private:
-    std::size_t triangles(std::uint32_t i) const {
-        if (!tris_.empty()) return tris_[i];
-        const ch04::bvh_node& n = t_.nodes[i];
-        return n.is_leaf() ? n.count : triangles(left(i)) + triangles(right(i));
-    }
+    // Triangles under a node count() makes a leaf: the dynamic program's count, or (greedy, which computes
+    // none) a binary leaf's own.
+    std::size_t triangles(std::uint32_t i) const { return tris_.empty() ? t_.nodes[i].count : tris_[i]; }
     void gather(std::uint32_t i, std::vector<std::uint32_t>& ids) const {
         const ch04::bvh_node& n = t_.nodes[i];
         if (n.is_leaf()) {

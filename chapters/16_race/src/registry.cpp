@@ -76,22 +76,22 @@ accel_entry packets(ch12::walk_kind walk, int lanes, int tile_w, int tile_h, int
 // Chapter 14: the hybrid tracer, K-ray packets (tiles of the race's image) on chapter 13's 8-wide tree, rays
 // leaving for the single-ray walk at `threshold` active lanes (ch14::automatic: per packet); strict: boxes
 // tested from tmin (not exact, "-strict").
-accel_entry hybrid(int lanes, int threshold, int image_width, bool strict = false, bool stored = false) {
+accel_entry hybrid(int lanes, int threshold, int image_width, bool strict = false, bool stored = false,
+                   std::string name = "") {
     const ch14::hybrid_config c{lanes, 4, lanes / 4, image_width, threshold, strict,
                                 stored ? ch13::child_order::collapsed : ch13::child_order::leaves_then_area};
-    const std::string name = "ch14-hybrid" + std::to_string(lanes) + "-" + ch14::threshold_name(threshold) +
-                             (strict ? "-strict" : "") + (stored ? "-stored" : "");
+    if (name.empty())
+        name = "ch14-hybrid" + std::to_string(lanes) + "-" + ch14::threshold_name(threshold) + (strict ? "-strict" : "") +
+               (stored ? "-stored" : "");
     return {name, "14", ch14::describe(c) + "; chapter 13's 8-wide tree (optimal collapse, blocks of 8)",
             [name, c] { return ch14::make_accel(name, c); }};
 }
-// The course's final tracer, one named row: chapter 14's hybrid as ch14-hybrid16-auto builds it (chapter 05's
-// binned SAH tree, chosen for its build time, collapsed SAH-optimally into chapter 13's 8-wide nodes with
-// blocks of 8; any hit leaves first).
+// The course's final tracer, one named row: the 16-lane hybrid with the threshold per packet, as
+// ch14-hybrid16-auto (its tree from chapter 05's binned SAH, chosen for its build time; any hit leaves first).
 accel_entry final_tracer(int image_width) {
-    const ch14::hybrid_config c{16, 4, 4, image_width, ch14::automatic, false, ch13::child_order::leaves_then_area};
-    return {"final", "14", "the course's final tracer: " + ch14::describe(c) + "; chapter 05's binned SAH tree, "
-            "collapsed optimally into chapter 13's 8-wide nodes, blocks of 8",
-            [c] { return ch14::make_accel("final", c); }};
+    accel_entry e = hybrid(16, ch14::automatic, image_width, false, false, "final");
+    e.description = "the course's final tracer: " + e.description + " from chapter 05's binned SAH tree";
+    return e;
 }
 // Chapter 13's wide walk over another chapter's tree: N-wide nodes (optimal collapse), blocks of M.
 ch13::wide_config wide_optimal(int width, int block) {

@@ -335,29 +335,28 @@ private:
     }
     template <class Stats>
     [[gnu::noinline]] hit single_closest(const ray& q, Stats& stats) const {
-        if constexpr (wide_tree) {
-            return ch13::wide_closest<ch13::ray_lanes<wide_block>>(wide_, *lanes_, q, stats, block_test(),
-                [&](ray& r, auto&& leaf) { ch13::robust_walk(wide_, r, stats, leaf); });
-        } else {
-            return tree_closest(*set_, binary_.loose, q, stats, [&](ray& r, auto&& leaf) {
-                ch05::fast_traverse(binary_, r, stats, [&](std::uint32_t first, std::uint32_t count) {
-                    return leaf(binary_.prim_ids.data() + first, count);
-                });
-            });
-        }
+        if constexpr (wide_tree)
+            return ch13::wide_closest<ch13::ray_lanes<wide_block>>(wide_, *lanes_, q, stats, block_test(), lone_walk(stats));
+        else return tree_closest(*set_, binary_.loose, q, stats, lone_walk(stats));
     }
     template <class Stats>
     [[gnu::noinline]] bool single_any(const ray& q, Stats& stats) const {
-        if constexpr (wide_tree) {
-            return ch13::wide_any<ch13::ray_lanes<wide_block>>(wide_, *lanes_, q, stats, block_test(),
-                [&](ray& r, auto&& leaf) { ch13::robust_walk(wide_, r, stats, leaf); });
-        } else {
-            return tree_any(*set_, binary_.loose, q, stats, [&](ray& r, auto&& leaf) {
+        if constexpr (wide_tree)
+            return ch13::wide_any<ch13::ray_lanes<wide_block>>(wide_, *lanes_, q, stats, block_test(), lone_walk(stats));
+        else return tree_any(*set_, binary_.loose, q, stats, lone_walk(stats));
+    }
+    // The lone ray's walk, walk(r, leaf): leaf(ref) per wide leaf, or leaf(ids, count) per binary leaf.
+    template <class Stats>
+    auto lone_walk(Stats& stats) const {
+        return [this, &stats](ray& r, auto&& leaf) {
+            if constexpr (wide_tree) {
+                ch13::robust_walk(wide_, r, stats, leaf);
+            } else {
                 ch05::fast_traverse(binary_, r, stats, [&](std::uint32_t first, std::uint32_t count) {
                     return leaf(binary_.prim_ids.data() + first, count);
                 });
-            });
-        }
+            }
+        };
     }
     bool built() const { return wide_tree ? lanes_ != nullptr : set_ != nullptr; }
 

@@ -104,7 +104,7 @@ private:
 };
 
 // Closest hit: loose triangles and rays no tree can place through `set`, every other ray through
-// walk(r, leaf) (wide_traverse, or robust_walk below), which calls leaf(ref) for each leaf it reaches;
+// walk(r, leaf) (wide_traverse, or robust_walk), which calls leaf(ref) for each leaf it reaches;
 // test(block, lanes, tmin, tmax, t, u, v) is the leaves' block test on the lanes Lanes(r) makes once per ray.
 template <class Lanes, int N, int M, class Set, class Stats, class Test, class Walk>
 hit wide_closest(const wide_bvh<N, M>& tree, const Set& set, const ray& query, Stats& stats, Test&& test, Walk&& walk) {
@@ -147,17 +147,6 @@ bool wide_any(const wide_bvh<N, M>& tree, const Set& set, const ray& query, Stat
         });
         return found;
     });
-}
-
-// The walk on chapter 05's robust slab test alone (wide_robust_slab), children in their stored order: no
-// exercise of this chapter in it, for the few rays another chapter's tracer hands to this tree (a packet
-// tracer's refused rays). Exact as wide_traverse is; slower.
-template <int N, int M, class Stats, class Leaf>
-void robust_walk(const wide_bvh<N, M>& tree, ray& r, Stats& stats, Leaf&& leaf) {
-    if (tree.nodes.empty() && !is_leaf(tree.root_ref)) return;
-    const float slack = wide_ray_slack(r, tree);
-    wide_walk<visit_order::stored>(tree, wide_robust_slab<N>(r, space_slack(r, tree.bounds)), slack, slack, r, stats,
-                                   leaf, tree.root_ref);
 }
 
 }  // namespace strahl::ch13

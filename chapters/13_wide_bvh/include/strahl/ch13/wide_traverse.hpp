@@ -230,20 +230,28 @@ void wide_walk(const wide_bvh<N, M>& tree, const Slab& s, float below, float sla
 
 #pragma GCC diagnostic pop
 
+// The walk on chapter 05's robust slab test alone (wide_robust_slab): for the rays the fast test refuses,
+// and for the few rays another chapter's tracer hands to this tree (a packet tracer's refused rays, in the
+// stored order: no exercise of this chapter in it). Exact as the fast walk is; slower.
+template <visit_order Order = visit_order::stored, int N, int M, class Stats, class Leaf>
+void robust_walk(const wide_bvh<N, M>& tree, ray& r, Stats& stats, Leaf&& leaf) {
+    if (tree.nodes.empty() && !is_leaf(tree.root_ref)) return;
+    const float slack = wide_ray_slack(r, tree);
+    wide_walk<Order>(tree, wide_robust_slab<N>(r, space_slack(r, tree.bounds)), slack, slack, r, stats, leaf,
+                     tree.root_ref);
+}
+
 // The walk with chapter 05's choice of slab test: the fast one where the ray allows it, else the robust one.
 // Flattened: g++ called chapter 05's fast_slab::make and the slab's set-up out of line here, a third of the
 // time of a ray that misses the tree (perf, the bunny's primary rays).
 template <visit_order Order, int N, int M, class Stats, class Leaf>
 [[gnu::flatten]] void wide_traverse(const wide_bvh<N, M>& tree, ray& r, Stats& stats, Leaf&& leaf) {
     if (tree.nodes.empty() && !is_leaf(tree.root_ref)) return;
-    const float slack = wide_ray_slack(r, tree);
     bool fast = false;
     const wide_fast_slab<N> s(r, tree.bounds, fast);
-    if (fast)
-        wide_walk<Order>(tree, s, slack, slack, r, stats, leaf, tree.root_ref);
-    else
-        wide_walk<Order>(tree, wide_robust_slab<N>(r, space_slack(r, tree.bounds)), slack, slack, r, stats, leaf,
-                         tree.root_ref);
+    if (!fast) return robust_walk<Order>(tree, r, stats, leaf);
+    const float slack = wide_ray_slack(r, tree);
+    wide_walk<Order>(tree, s, slack, slack, r, stats, leaf, tree.root_ref);
 }
 
 }  // namespace strahl::ch13
