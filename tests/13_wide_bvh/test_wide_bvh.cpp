@@ -8,6 +8,7 @@
 #include "exactness.hpp"
 #include "hand_tree.hpp"
 #include "slab_cases.hpp"
+#include "strahl/ch13/quantized_node.hpp"
 #include "strahl/ch13/wide_traverse.hpp"
 #include "test_support.hpp"
 #include <catch2/catch.hpp>
@@ -82,17 +83,19 @@ void check_tree(const ch04::bvh& t, const triangle_mesh& m, collapse_method meth
 
 void check_exact(const scene& s, std::size_t n_rays) {
     for (const collapse_method method : {collapse_method::greedy, collapse_method::optimal})
-        for (const auto& [width, block, order] :
-             {std::tuple{4, 4, child_order::collapsed}, {8, 4, child_order::collapsed}, {8, 8, child_order::collapsed},
-              {8, 8, child_order::leaves_then_area}, {16, 4, child_order::collapsed}, {16, 8, child_order::collapsed}}) {
+        for (const auto& [width, block, order, quantized] :
+             {std::tuple{4, 4, child_order::collapsed, false}, {8, 4, child_order::collapsed, false},
+              {8, 8, child_order::collapsed, false}, {8, 8, child_order::leaves_then_area, false},
+              {8, 8, child_order::leaves_then_area, true}, {16, 4, child_order::collapsed, false},
+              {16, 8, child_order::collapsed, false}}) {
             wide_config c;
-            c.width = width, c.block = block, c.collapse.method = method, c.order = order;
+            c.width = width, c.block = block, c.collapse.method = method, c.order = order, c.quantized = quantized;
             const auto a = make_accel("test", [](std::span<const aabb> b, std::span<const vec3> c) {
                 return ch05::build_sah_bvh_fast(b, c);
             }, c);
             a->build(s);
             INFO("BVH" << width << ", blocks of " << block << ", " << to_string(method) << " collapse, order "
-                       << int(order) << ", "
+                       << int(order) << (quantized ? ", quantised" : "") << ", "
                        << s.mesh.triangle_count() << " triangles");
             CHECK(test::disagreements_with_brute_force(*a, s.mesh, test::nasty_rays(binary(s.mesh), n_rays, 17)) == 0);
         }
@@ -221,6 +224,75 @@ TEST_CASE("ch13 wide BVH: equals brute force on a scene far from the origin", "[
     triangle_mesh far = teapot_scene(3).mesh;
     for (vec3& p : far.positions) p += vec3(3e4f, -1e5f, 2e4f);
     check_exact(mesh_only(far), 300);
+}
+
+TEST_CASE("ch13 quantised nodes: each decoded box holds its child's box and lies in the tree's bounds, on a "
+          "power-of-two grid, at every scale", "[ch13][adversarial]") {
+    static_assert(sizeof(qnode<8>) == 128 && sizeof(qnode<16>) == 256);
+    const auto check = [](const triangle_mesh& m) {
+        const wide_bvh<8, 8> w = collapse<8, 8>(binary(m), m, {collapse_method::optimal});
+        const wide_bvh<8, 8, qnode<8>> q = quantize(w);
+        REQUIRE(q.nodes.size() == w.nodes.size());
+        CHECK(q.root_ref == w.root_ref);
+        CHECK(q.blocks.size() == w.blocks.size());
+        CHECK(q.memory_bytes() < w.memory_bytes());
+        std::size_t tight = 0, planes = 0;
+        for (std::size_t i = 0; i < w.nodes.size(); ++i)
+            for (int k = 0; k < 8; ++k) {
+                CHECK(q.nodes[i].used(k) == w.nodes[i].used(k));
+                if (!w.nodes[i].used(k)) continue;
+                CHECK(q.nodes[i].child[k] == w.nodes[i].child[k]);
+                const aabb d = q.nodes[i].box(k), b = w.nodes[i].box(k);
+                for (int a = 0; a < 3; ++a) {
+                    const float step = q.nodes[i].step[a];
+                    int e = 0;
+                    CHECK(std::frexp(step, &e) == 0.5f);  // a power of two ...
+                    CHECK(step >= 0x1p-100f);             // ... no smaller than the grid's floor
+                    CHECK(d.min[a] <= b.min[a]);          // outward: the decoded box holds the child's
+                    CHECK(d.max[a] >= b.max[a]);
+                    CHECK(d.min[a] >= q.bounds.min[a]);   // and lies in the bounds the slab test is set up with
+                    CHECK(d.max[a] <= q.bounds.max[a]);
+                    // The SIMD row decodes to the same planes as the scalar one.
+                    CHECK(q.nodes[i].row(a)[k] == d.min[a]);
+                    CHECK(q.nodes[i].row(3 + a)[k] == d.max[a]);
+                    planes += 2;
+                    // Within two steps of the box (in double: no rounding), but where the grid is at its floor.
+                    const double two = 2.0 * double(step);
+                    tight += step == 0x1p-100f ? 2 : (d.min[a] > b.min[a] - two) + (d.max[a] < b.max[a] + two);
+                }
+            }
+        CHECK(tight == planes);  // and no looser than the grid needs
+    };
+    const triangle_mesh teapot = teapot_scene(3).mesh;
+    check(teapot);
+    // Beyond the course's range (max_coordinate, min_extent) where the builders still work: the grid's floor.
+    for (const float scale : {1e-33f, 1e-20f, 1e-9f, 1e11f}) {
+        INFO("the teapot scaled by " << scale);
+        triangle_mesh m = teapot;
+        for (vec3& p : m.positions) p *= scale;
+        check(m);
+    }
+    triangle_mesh far = teapot;  // small boxes far from the origin: steps of a few units of rounding
+    for (vec3& p : far.positions) p = p * 1e-3f + vec3(1e6f, -3e5f, 7e4f);
+    check(far);
+    triangle_mesh flat = random_soup(600, 5, 0.1f);
+    for (vec3& p : flat.positions) p.z = -0.5f;
+    check(flat);
+}
+
+TEST_CASE("ch13 quantised nodes: the walk equals brute force at tiny, huge and far scales", "[ch13][adversarial]") {
+    for (const auto& [scale, offset] : {std::pair{1e-33f, 0.0f}, {1e-9f, 0.0f}, {1e11f, 0.0f}, {1e-3f, 1e6f}}) {
+        INFO("the teapot scaled by " << scale << ", moved by " << offset);
+        triangle_mesh m = teapot_scene(3).mesh;
+        for (vec3& p : m.positions) p = p * scale + vec3(offset);
+        wide_config c;
+        c.width = 8, c.block = 8, c.collapse.method = collapse_method::optimal, c.quantized = true;
+        const auto a = make_accel("test", [](std::span<const aabb> b, std::span<const vec3> c) {
+            return ch05::build_sah_bvh_fast(b, c);
+        }, c);
+        a->build(mesh_only(m));
+        CHECK(test::disagreements_with_brute_force(*a, m, test::nasty_rays(binary(m), 300, 5)) == 0);
+    }
 }
 
 TEST_CASE("ch13 wide BVH: the walk's float set-up of the fast test misses no box, near and far from the origin",

@@ -60,6 +60,21 @@ template <int N> vmask<N> from_bits(unsigned b) {
     else if constexpr (N == 16) return from_bits16(b);
 #endif
 }
+// N unsigned bytes (p[0] .. p[N - 1]) as float lanes, exactly (every byte is a float): chapter 13's
+// quantised nodes keep their planes as bytes.
+template <int N> vfloat<N> bytes_to_float(const std::uint8_t* p) {
+#if defined(__AVX2__)
+    if constexpr (native<N> && N == 8)
+        return vfloat<N>(_mm256_cvtepi32_ps(_mm256_cvtepu8_epi32(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(p)))));
+#endif
+#if defined(__AVX512F__)
+    if constexpr (native<N> && N == 16)
+        return vfloat<N>(_mm512_cvtepi32_ps(_mm512_cvtepu8_epi32(_mm_loadu_si128(reinterpret_cast<const __m128i*>(p)))));
+#endif
+    alignas(64) float f[N];
+    for (int i = 0; i < N; ++i) f[i] = float(p[i]);
+    return vfloat<N>::load(f);
+}
 template <int N, bool B> bool any(vmask<N, B> m) { return movemask(m) != 0; }
 template <int N, bool B> bool all(vmask<N, B> m) { return movemask(m) == detail::lane_bits(N); }
 template <int N, bool B> bool none(vmask<N, B> m) { return movemask(m) == 0; }

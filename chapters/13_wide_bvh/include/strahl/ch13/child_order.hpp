@@ -53,8 +53,9 @@ void order_children(wide_bvh<N, M>& tree, child_order order) {
 
 // The bits of `slots` (a node's children by slot) moved to rank positions: bit j set where the j-th child
 // of n.order is in `slots`. The walks visit the result's bits in order, child n.order[j] for bit j.
-template <int N>
-[[gnu::always_inline]] inline unsigned ranked_bits(const wide_node<N>& n, unsigned slots) {
+template <class Node>
+[[gnu::always_inline]] inline unsigned ranked_bits(const Node& n, unsigned slots) {
+    constexpr int N = sizeof(n.order);
     unsigned ranked = 0;
     for (int j = 0; j < N; ++j) ranked |= ((slots >> n.order[j]) & 1u) << j;
     return ranked;

@@ -20,8 +20,9 @@ namespace {
 
 // Watertight: the leaves' blocks tested by chapter 15's watertight test (on the corners, vertex_block),
 // else by Moeller-Trumbore (on the edges, triangle_block).
-template <int N, int M, bool Watertight = false>
-class wide_accel final : public per_ray_accel<wide_accel<N, M, Watertight>, wide_accel_base> {
+// Node: wide_node<N>, or qnode<N> for the quantised tree (quantized_node.hpp).
+template <int N, int M, bool Watertight = false, class Node = wide_node<N>>
+class wide_accel final : public per_ray_accel<wide_accel<N, M, Watertight, Node>, wide_accel_base> {
 public:
     wide_accel(std::string name, ch04::mesh_bvh_builder builder, const wide_config& c)
         : name_(std::move(name)), builder_(std::move(builder)), config_(c.collapse), order_(c.order),
@@ -37,9 +38,11 @@ public:
         this->set_frame(ray_frame(s.mesh.bounds()));
         {
             const ch04::bvh binary = builder_(s.mesh);
-            tree_ = collapse<N, M>(binary, s.mesh, config_);
+            wide_bvh<N, M> wide = collapse<N, M>(binary, s.mesh, config_);
+            order_children(wide, order_);
+            if constexpr (std::is_same_v<Node, wide_node<N>>) tree_ = std::move(wide);
+            else tree_ = quantize(wide);
         }
-        order_children(tree_, order_);
         corners_.clear();
         if constexpr (Watertight) {
             corners_.resize(tree_.blocks.size());
@@ -100,7 +103,7 @@ private:
     collapse_config config_;
     child_order order_ = child_order::collapsed;
     bool any_nearest_ = false;
-    wide_bvh<N, M> tree_;
+    wide_bvh<N, M, Node> tree_;
     std::vector<vertex_block<M>> corners_;  // watertight only: the corners of every block
     std::unique_ptr<block_lane_set<N, M, Watertight>> set_;  // the loose triangles and brute force's fallback
 };
@@ -122,6 +125,8 @@ std::unique_ptr<wide_accel_base> make_accel(std::string name, ch04::bvh_builder 
 
 std::unique_ptr<wide_accel_base> make_accel_from_mesh(std::string name, ch04::mesh_bvh_builder builder, const wide_config& c) {
     const int key = c.width * 100 + c.block;
+    if (c.quantized && (key != 808 || c.watertight))
+        throw std::invalid_argument("wide BVH: quantised nodes are built for nodes of 8 with blocks of 8, Moeller-Trumbore");
     if (c.watertight) {
         switch (key) {
         case 804: return std::make_unique<wide_accel<8, 4, true>>(std::move(name), std::move(builder), c);
@@ -133,7 +138,9 @@ std::unique_ptr<wide_accel_base> make_accel_from_mesh(std::string name, ch04::me
     switch (key) {
     case 404: return std::make_unique<wide_accel<4, 4>>(std::move(name), std::move(builder), c);
     case 804: return std::make_unique<wide_accel<8, 4>>(std::move(name), std::move(builder), c);
-    case 808: return std::make_unique<wide_accel<8, 8>>(std::move(name), std::move(builder), c);
+    case 808:
+        if (c.quantized) return std::make_unique<wide_accel<8, 8, false, qnode<8>>>(std::move(name), std::move(builder), c);
+        return std::make_unique<wide_accel<8, 8>>(std::move(name), std::move(builder), c);
     case 1604: return std::make_unique<wide_accel<16, 4>>(std::move(name), std::move(builder), c);
     case 1608: return std::make_unique<wide_accel<16, 8>>(std::move(name), std::move(builder), c);
     default:

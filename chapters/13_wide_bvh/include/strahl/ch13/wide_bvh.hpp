@@ -78,20 +78,22 @@ struct collapse_stats {
     double ms = 0.0;   // the collapse alone
 };
 
-// The wide tree. nodes[0] is the root unless the whole tree is one leaf (root_ref says which).
-template <int N, int M>
+// The wide tree. nodes[0] is the root unless the whole tree is one leaf (root_ref says which). Node: the
+// float node above, or its quantised form (quantized_node.hpp, made from a collapsed tree by quantize()).
+template <int N, int M, class Node = wide_node<N>>
 struct wide_bvh {
+    using node_type = Node;
     aabb bounds;
     vec3 centre{0.0f};     // the bounds' centre and an upper bound on their diagonal's length, for the
     float diagonal = 0.0f; // per-ray slack (wide_traverse.hpp)
     std::uint32_t root_ref = 0;
-    huge_vector<wide_node<N>> nodes;          // (huge_pages.hpp: written once, on 2 MiB pages where offered)
+    huge_vector<Node> nodes;                  // (huge_pages.hpp: written once, on 2 MiB pages where offered)
     huge_vector<triangle_block<M>> blocks;
     std::vector<std::uint32_t> loose;  // primitives the binary tree left out (non-finite boxes)
     collapse_stats stats;
 
     std::size_t memory_bytes() const {
-        return nodes.size() * sizeof(wide_node<N>) + blocks.size() * sizeof(triangle_block<M>) + loose.size() * 4;
+        return nodes.size() * sizeof(Node) + blocks.size() * sizeof(triangle_block<M>) + loose.size() * 4;
     }
 };
 

@@ -27,8 +27,9 @@ class block_lane_set {
 public:
     using block_t = std::conditional_t<Watertight, vertex_block<M>, triangle_block<M>>;
 
-    block_lane_set(const wide_bvh<N, M>& tree, const std::vector<vertex_block<M>>& corners, const triangle_mesh& mesh)
-        : tree_(&tree), corners_(&corners) {
+    template <class Node>
+    block_lane_set(const wide_bvh<N, M, Node>& tree, const std::vector<vertex_block<M>>& corners, const triangle_mesh& mesh)
+        : blocks_(&tree.blocks), corners_(&corners) {
         for (const std::uint32_t id : tree.loose) {
             const auto p = mesh.triangle(id);
             block_t b;
@@ -47,7 +48,7 @@ public:
             loose_ids_.push_back(id);
         }
     }
-    std::size_t lanes() const { return tree_->blocks.size() * M; }
+    std::size_t lanes() const { return blocks_->size() * M; }
     std::size_t size() const { return lanes() + loose_.size(); }
     // The loose triangles' indices in this set (for tree_query.hpp's loose list).
     std::span<const std::uint32_t> loose() const { return loose_indices_; }
@@ -64,7 +65,7 @@ public:
 
 private:
     std::uint32_t id(std::uint32_t k) const {
-        return k < lanes() ? tree_->blocks[k / M].id[k % M] : loose_ids_[k - lanes()];
+        return k < lanes() ? (*blocks_)[k / M].id[k % M] : loose_ids_[k - lanes()];
     }
     // Lane `lane` of block b in every lane.
     static block_t broadcast(const block_t& b, int lane) {
@@ -94,10 +95,10 @@ private:
     }
     const block_t& block_source(std::size_t i) const {
         if constexpr (Watertight) return (*corners_)[i];
-        else return tree_->blocks[i];
+        else return (*blocks_)[i];
     }
 
-    const wide_bvh<N, M>* tree_;
+    const huge_vector<triangle_block<M>>* blocks_;  // the tree's
     const std::vector<vertex_block<M>>* corners_;
     std::vector<block_t> loose_;
     std::vector<std::uint32_t> loose_ids_, loose_indices_;
@@ -106,8 +107,8 @@ private:
 // Closest hit: loose triangles and rays no tree can place through `set`, every other ray through
 // walk(r, leaf) (wide_traverse, or robust_walk), which calls leaf(ref) for each leaf it reaches;
 // test(block, lanes, tmin, tmax, t, u, v) is the leaves' block test on the lanes Lanes(r) makes once per ray.
-template <class Lanes, int N, int M, class Set, class Stats, class Test, class Walk>
-hit wide_closest(const wide_bvh<N, M>& tree, const Set& set, const ray& query, Stats& stats, Test&& test, Walk&& walk) {
+template <class Lanes, int N, int M, class Node, class Set, class Stats, class Test, class Walk>
+hit wide_closest(const wide_bvh<N, M, Node>& tree, const Set& set, const ray& query, Stats& stats, Test&& test, Walk&& walk) {
     return tree_closest_with(set, set.loose(), query, stats, [&](ray& r, hit& best) {
         const Lanes lanes(r);
         walk(r, [&](std::uint32_t ref) {
@@ -131,8 +132,8 @@ hit wide_closest(const wide_bvh<N, M>& tree, const Set& set, const ray& query, S
 
 // Any hit, the whole query ending at the first blocker: as above, walk(r, leaf) in the order the caller
 // chooses.
-template <class Lanes, int N, int M, class Set, class Stats, class Test, class Walk>
-bool wide_any(const wide_bvh<N, M>& tree, const Set& set, const ray& query, Stats& stats, Test&& test, Walk&& walk) {
+template <class Lanes, int N, int M, class Node, class Set, class Stats, class Test, class Walk>
+bool wide_any(const wide_bvh<N, M, Node>& tree, const Set& set, const ray& query, Stats& stats, Test&& test, Walk&& walk) {
     return tree_any_with(set, set.loose(), query, stats, [&](ray& r) {
         const Lanes lanes(r);
         bool found = false;

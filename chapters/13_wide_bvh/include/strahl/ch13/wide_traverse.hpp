@@ -8,6 +8,7 @@
 #include "strahl/ch04/traverse.hpp"
 #include "strahl/ch05/slab_test.hpp"
 #include "strahl/ch13/child_order.hpp"
+#include "strahl/ch13/quantized_node.hpp"
 #include "strahl/ch13/wide_bvh.hpp"
 #include "strahl/simd.hpp"
 #include <bit>
@@ -18,8 +19,8 @@ namespace strahl::ch13 {
 // strahl/tree_query.hpp's ray_slack, bounded from above without a square root: |v| <= |x| + |y| + |z| for
 // the distances, |d| >= max(|dx|, |dy|, |dz|) for the direction, and the tree's diagonal (precomputed in
 // wide_bvh::diagonal) in place of its own. A larger slack only widens the box tests: never a box lost.
-template <int N, int M>
-[[gnu::always_inline]] inline float wide_ray_slack(const ray& r, const wide_bvh<N, M>& tree) {
+template <int N, int M, class Node>
+[[gnu::always_inline]] inline float wide_ray_slack(const ray& r, const wide_bvh<N, M, Node>& tree) {
     const vec3 to = r.org - tree.centre;
     const float reach = (std::fabs(to.x) + std::fabs(to.y) + std::fabs(to.z)) + tree.diagonal;
     const float len = std::max(std::fabs(r.dir.x), std::max(std::fabs(r.dir.y), std::fabs(r.dir.z)));
@@ -31,8 +32,11 @@ template <int N, int M>
 template <int N>
 struct plane_rows {
     std::size_t near_row[3], far_row[3];
+    int near_q[3], far_q[3];  // the same rows of a quantised node (qnode::row)
     explicit plane_rows(const vec3& dir) {
         for (int a = 0; a < 3; ++a) {
+            near_q[a] = std::signbit(dir[a]) ? 3 + a : a;
+            far_q[a] = std::signbit(dir[a]) ? a : 3 + a;
             const std::size_t lo = offsetof(wide_node<N>, lo) + a * N * sizeof(float);
             const std::size_t hi = offsetof(wide_node<N>, hi) + a * N * sizeof(float);
             near_row[a] = std::signbit(dir[a]) ? hi : lo;
@@ -76,6 +80,18 @@ struct wide_fast_slab : plane_rows<N> {
         else return plane * inv_dir - org_term;
     }
     vf entry(const wide_node<N>& n, float t0, float t1, simd::vmask<N>& hit) const;
+    // The same on a quantised node, each row decoded where it is read.
+    [[gnu::always_inline]] vf entry(const qnode<N>& n, float t0, float t1, simd::vmask<N>& hit) const {
+        vf lo(t0), hi(t1);
+        for (int a = 0; a < 3; ++a) {
+            const vf near = plane_t(n.row(this->near_q[a]), inv[a], org_near[a]);
+            const vf far = plane_t(n.row(this->far_q[a]), inv[a], org_far[a]);
+            lo = simd::max(near, lo);
+            hi = simd::min(far, hi);
+        }
+        hit = lo <= hi;
+        return lo;
+    }
 };
 
 // Exercise 13.2, the slab test of one ray against the N boxes of node n in one go (traversal.cpp): the
@@ -168,20 +184,26 @@ struct ordered_push {
 
 // start: the node (or leaf) the walk begins at, the root unless chapter 14 hands it a ray further down;
 // push: the ordered push (chapter 14 brings its own).
-template <visit_order Order, int N, int M, class Slab, class Stats, class Leaf, class Push = ordered_push<N>>
-void wide_walk(const wide_bvh<N, M>& tree, const Slab& s, float below, float slack, ray& r, Stats& stats,
+template <visit_order Order, int N, int M, class Node, class Slab, class Stats, class Leaf, class Push = ordered_push<N>>
+void wide_walk(const wide_bvh<N, M, Node>& tree, const Slab& s, float below, float slack, ray& r, Stats& stats,
                Leaf&& leaf, std::uint32_t start, Push push = {}) {
     stack_entry stack[ch04::bvh_max_depth * (N - 1) + 2];
     int top = 0;
     std::uint32_t ref = start;
     for (;;) {
         if (!is_leaf(ref)) {
-            const wide_node<N>& n = tree.nodes[ref];
+            const Node& n = tree.nodes[ref];
             stats.node_visit();
             stats.box_test(N);
             simd::vmask<N> hit;
-            const simd::vfloat<N> t = s.entry(n, r.tmin - below, r.tmax + slack, hit);
-            const unsigned bits = simd::movemask(hit);
+            simd::vfloat<N> t;
+            if constexpr (requires { s.entry(n, 0.0f, 0.0f, hit); }) {
+                t = s.entry(n, r.tmin - below, r.tmax + slack, hit);
+            } else {
+                wide_node<N> scratch;  // a quantised node's planes, decoded for a slab test of float rows
+                t = s.entry(planes_of(n, scratch), r.tmin - below, r.tmax + slack, hit);
+            }
+            const unsigned bits = simd::movemask(hit) & used_slots(n);
             if (bits != 0) {
                 if ((bits & (bits - 1)) == 0) {  // one child hit: go there
                     ref = n.child[std::countr_zero(bits)];
@@ -233,8 +255,8 @@ void wide_walk(const wide_bvh<N, M>& tree, const Slab& s, float below, float sla
 // The walk on chapter 05's robust slab test alone (wide_robust_slab): for the rays the fast test refuses,
 // and for the few rays another chapter's tracer hands to this tree (a packet tracer's refused rays, in the
 // stored order: no exercise of this chapter in it). Exact as the fast walk is; slower.
-template <visit_order Order = visit_order::stored, int N, int M, class Stats, class Leaf>
-void robust_walk(const wide_bvh<N, M>& tree, ray& r, Stats& stats, Leaf&& leaf) {
+template <visit_order Order = visit_order::stored, int N, int M, class Node, class Stats, class Leaf>
+void robust_walk(const wide_bvh<N, M, Node>& tree, ray& r, Stats& stats, Leaf&& leaf) {
     if (tree.nodes.empty() && !is_leaf(tree.root_ref)) return;
     const float slack = wide_ray_slack(r, tree);
     wide_walk<Order>(tree, wide_robust_slab<N>(r, space_slack(r, tree.bounds)), slack, slack, r, stats, leaf,
@@ -244,8 +266,8 @@ void robust_walk(const wide_bvh<N, M>& tree, ray& r, Stats& stats, Leaf&& leaf) 
 // The walk with chapter 05's choice of slab test: the fast one where the ray allows it, else the robust one.
 // Flattened: g++ called chapter 05's fast_slab::make and the slab's set-up out of line here, a third of the
 // time of a ray that misses the tree (perf, the bunny's primary rays).
-template <visit_order Order, int N, int M, class Stats, class Leaf>
-[[gnu::flatten]] void wide_traverse(const wide_bvh<N, M>& tree, ray& r, Stats& stats, Leaf&& leaf) {
+template <visit_order Order, int N, int M, class Node, class Stats, class Leaf>
+[[gnu::flatten]] void wide_traverse(const wide_bvh<N, M, Node>& tree, ray& r, Stats& stats, Leaf&& leaf) {
     if (tree.nodes.empty() && !is_leaf(tree.root_ref)) return;
     bool fast = false;
     const wide_fast_slab<N> s(r, tree.bounds, fast);
