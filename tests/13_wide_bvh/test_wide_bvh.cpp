@@ -83,19 +83,21 @@ void check_tree(const ch04::bvh& t, const triangle_mesh& m, collapse_method meth
 
 void check_exact(const scene& s, std::size_t n_rays) {
     for (const collapse_method method : {collapse_method::greedy, collapse_method::optimal})
-        for (const auto& [width, block, order, quantized] :
-             {std::tuple{4, 4, child_order::collapsed, false}, {8, 4, child_order::collapsed, false},
-              {8, 8, child_order::collapsed, false}, {8, 8, child_order::leaves_then_area, false},
-              {8, 8, child_order::leaves_then_area, true}, {16, 4, child_order::collapsed, false},
-              {16, 8, child_order::collapsed, false}}) {
+        for (const auto& [width, block, order, quantized, octant] :
+             {std::tuple{4, 4, child_order::collapsed, false, false}, {8, 4, child_order::collapsed, false, false},
+              {8, 8, child_order::collapsed, false, false}, {8, 8, child_order::leaves_then_area, false, false},
+              {8, 8, child_order::leaves_then_area, true, false}, {8, 4, child_order::collapsed, false, true},
+              {8, 8, child_order::leaves_then_area, false, true}, {16, 4, child_order::collapsed, false, false},
+              {16, 8, child_order::collapsed, false, false}}) {
             wide_config c;
             c.width = width, c.block = block, c.collapse.method = method, c.order = order, c.quantized = quantized;
+            c.octant_order = octant;
             const auto a = make_accel("test", [](std::span<const aabb> b, std::span<const vec3> c) {
                 return ch05::build_sah_bvh_fast(b, c);
             }, c);
             a->build(s);
             INFO("BVH" << width << ", blocks of " << block << ", " << to_string(method) << " collapse, order "
-                       << int(order) << (quantized ? ", quantised" : "") << ", "
+                       << int(order) << (quantized ? ", quantised" : "") << (octant ? ", octant order" : "") << ", "
                        << s.mesh.triangle_count() << " triangles");
             CHECK(test::disagreements_with_brute_force(*a, s.mesh, test::nasty_rays(binary(s.mesh), n_rays, 17)) == 0);
         }
@@ -224,6 +226,39 @@ TEST_CASE("ch13 wide BVH: equals brute force on a scene far from the origin", "[
     triangle_mesh far = teapot_scene(3).mesh;
     for (vec3& p : far.positions) p += vec3(3e4f, -1e5f, 2e4f);
     check_exact(mesh_only(far), 300);
+}
+
+TEST_CASE("ch13 octant order: per octant a permutation of the slots, used children first, by their centres along "
+          "the octant's diagonal", "[ch13]") {
+    const triangle_mesh m = teapot_scene(3).mesh;
+    wide_bvh<8, 8> w = collapse<8, 8>(binary(m), m, {collapse_method::optimal});
+    order_by_octant(w);
+    REQUIRE(w.nodes.size() > 10);
+    int reordered = 0;
+    for (const wide_node<8>& n : w.nodes)
+        for (int o = 0; o < 8; ++o) {
+            const std::uint32_t word = octant_word(n, o);
+            CHECK(word < (1u << 24));
+            unsigned seen = 0;
+            float last = -inf;
+            bool unused_seen = false;
+            for (int j = 0; j < 8; ++j) {
+                const int k = (word >> (3 * j)) & 7;
+                seen |= 1u << k;
+                if (j != k) ++reordered;
+                if (!n.used(k)) {
+                    unused_seen = true;
+                    continue;
+                }
+                CHECK_FALSE(unused_seen);  // used children first
+                float key = 0.0f;
+                for (int a = 0; a < 3; ++a) key += (((o >> a) & 1) ? -1.0f : 1.0f) * (n.lo[a][k] + n.hi[a][k]);
+                CHECK(key >= last);  // nearest centre first
+                last = key;
+            }
+            CHECK(seen == 0xffu);  // a permutation
+        }
+    CHECK(reordered > 0);  // not the stored order everywhere
 }
 
 TEST_CASE("ch13 quantised nodes: each decoded box holds its child's box and lies in the tree's bounds, on a "

@@ -80,6 +80,12 @@ public:
             n.child[k] = used ? refs[k] : 0;
             n.order[k] = std::uint8_t(k);
         }
+        if constexpr (N == 8)
+            for (int o = 0; o < 8; ++o) {  // the stored order for every octant
+                const std::uint32_t w = 0xFAC688u;  // slots 0..7, 3 bits each
+                n.octant_order[3 * o] = std::uint8_t(w), n.octant_order[3 * o + 1] = std::uint8_t(w >> 8),
+                n.octant_order[3 * o + 2] = std::uint8_t(w >> 16);
+            }
         return index;
     }
 

@@ -10,7 +10,8 @@ std::string threshold_name(int threshold) {
 
 std::string describe(const hybrid_config& c) {
     const std::string strict = std::string(c.strict ? "; strict boxes, tested from tmin (not exact)" : "") +
-                               (c.order == ch13::child_order::collapsed ? "; any hit in stored order" : "");
+                               (c.order == ch13::child_order::collapsed ? "; any hit in stored order" : "") +
+                               (c.octant_order ? "; lone rays in the octant's order" : "");
     const std::string s = "hybrid, " + std::to_string(c.lanes) + " lanes, " + std::to_string(c.tile_w) + "x" +
                           std::to_string(c.tile_h) + " tiles, ";
     if (c.threshold == automatic) return s + "threshold per packet from its coherence" + strict;

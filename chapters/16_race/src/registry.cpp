@@ -51,10 +51,10 @@ accel_entry ch11_step(ch11::step s) {
 // Chapter 13: chapter 05's fast binned tree (or chapter 06's reinserted one) collapsed into a wide tree.
 accel_entry wide(std::string name, std::string description, int width, int block, ch13::collapse_method method,
                  bool reinserted = false, bool watertight = false,
-                 ch13::child_order order = ch13::child_order::collapsed, bool quantized = false) {
+                 ch13::child_order order = ch13::child_order::collapsed, bool quantized = false, bool octant = false) {
     ch13::wide_config c;
     c.width = width, c.block = block, c.collapse.method = method, c.watertight = watertight, c.order = order;
-    c.quantized = quantized;
+    c.quantized = quantized, c.octant_order = octant;
     const ch04::bvh_builder source = reinserted
         ? ch04::bvh_builder([](std::span<const aabb> b, std::span<const vec3> centroids) {
               return ch06::build_refined_bvh(b, centroids, refined(ch06::start_tree::binned16, ch06::refine_method::reinsertion));
@@ -90,9 +90,19 @@ accel_entry hybrid(int lanes, int threshold, int image_width, bool strict = fals
 // The course's final tracer, one named row: the 16-lane hybrid with the threshold per packet, as
 // ch14-hybrid16-auto (its tree from chapter 05's binned SAH, chosen for its build time; any hit leaves first).
 accel_entry final_tracer(int image_width) {
-    accel_entry e = hybrid(16, ch14::automatic, image_width, false, false, "final");
-    e.description = "the course's final tracer: " + e.description + " from chapter 05's binned SAH tree";
-    return e;
+    ch14::hybrid_config c{16, 4, 4, image_width, ch14::automatic, false, ch13::child_order::leaves_then_area};
+    c.octant_order = true;
+    return {"final", "14", "the course's final tracer: " + ch14::describe(c) +
+            "; chapter 13's 8-wide tree (optimal collapse, blocks of 8) from chapter 05's binned SAH tree",
+            [c] { return ch14::make_accel("final", c); }};
+}
+// Its slower, better build: the same tracer on chapter 09's SBVH (spatial splits).
+accel_entry final_sbvh(int image_width) {
+    ch14::hybrid_config c{16, 4, 4, image_width, ch14::automatic, false, ch13::child_order::leaves_then_area};
+    c.builder = [](const triangle_mesh& m) { return ch09::build_sbvh(m); };
+    c.octant_order = true;
+    return {"final-sbvh", "14", "the final tracer on chapter 09's SBVH (spatial splits): " + ch14::describe(c) +
+            "; chapter 13's 8-wide tree (optimal collapse, blocks of 8)", [c] { return ch14::make_accel("final-sbvh", c); }};
 }
 // Chapter 13's wide walk over another chapter's tree: N-wide nodes (optimal collapse), blocks of M.
 ch13::wide_config wide_optimal(int width, int block) {
@@ -175,6 +185,10 @@ std::vector<accel_entry> registered_accels(const registry_options& o) {
         wide("ch13-bvh8-block8-area", "8-wide nodes (optimal collapse), blocks of 8, children stored leaves first, then "
              "by decreasing surface area (the any-hit walk's order)", 8, 8, ch13::collapse_method::optimal, false, false,
              ch13::child_order::leaves_then_area),
+        wide("ch13-bvh8-block8-octant", "as ch13-bvh8-block8, closest hit visiting the children in each node's order for "
+             "the ray's octant (by their centres along the octant's diagonal, found at build) instead of sorting "
+             "them by entry distance", 8, 8, ch13::collapse_method::optimal, false, false,
+             ch13::child_order::collapsed, false, true),
         wide("ch13-bvh8-block8-quant", "as ch13-bvh8-block8, its nodes quantised: child boxes as bytes on a "
              "power-of-two grid per node, rounded outward (128-byte nodes instead of 256)", 8, 8,
              ch13::collapse_method::optimal, false, false, ch13::child_order::collapsed, true),
@@ -182,7 +196,7 @@ std::vector<accel_entry> registered_accels(const registry_options& o) {
         wide("ch13-bvh8-reinserted", "chapter 06's reinserted tree collapsed into 8-wide nodes (optimal), blocks of 4",
              8, 4, ch13::collapse_method::optimal, true),
         hybrid(8, ch14::automatic, o.packet_width), hybrid(16, ch14::automatic, o.packet_width),
-        hybrid(16, ch14::automatic, o.packet_width, true), final_tracer(o.packet_width),
+        hybrid(16, ch14::automatic, o.packet_width, true), final_tracer(o.packet_width), final_sbvh(o.packet_width),
         {"ch15-mt-fast", "15", "chapter 05's binned SAH tree and fast walk, Moeller-Trumbore: chapter 15's baseline",
          [] { return ch15::make_tree(ch15::test_kind::mt, ch15::box_kind::fast); }},
         {"ch15-watertight-fast", "15", "the same tree and walk with the watertight test (Woop, Benthin and Wald 2013)",

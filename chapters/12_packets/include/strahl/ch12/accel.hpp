@@ -3,6 +3,7 @@
 // registers them; the chapter's program and tests also read their lane utilisation.
 #pragma once
 #include "strahl/accel.hpp"
+#include "strahl/ch04/accel.hpp"
 #include "strahl/stats.hpp"
 #include <cstdint>
 #include <memory>
@@ -29,6 +30,9 @@ struct packet_config {
     // The batch's rays seen as rows of this many (the race's image width: primary rays are pixels in
     // scanline order, secondary rays follow their primary hits in pixel order); 0: packets of consecutive rays.
     int image_width = 0;
+    // The binary tree the walks start from (collapsed for the wide walks): empty for chapter 05's binned SAH
+    // tree (16 bins), else a builder handed the mesh (chapter 16's registry passes chapter 09's SBVH).
+    ch04::mesh_bvh_builder builder;
 };
 
 // One line: "wide walk, 16 lanes, 4x4 tiles".

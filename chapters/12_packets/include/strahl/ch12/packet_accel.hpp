@@ -93,9 +93,13 @@ public:
             const auto t = s.mesh.triangle(i);
             boxes[i] = aabb{}.grow(t[0]).grow(t[1]).grow(t[2]), centroids[i] = boxes[i].centroid();
         }
-        ch05::sah_build_params params;
-        params.method = ch05::sah_method::binned, params.bins = 16;
-        binary_ = ch05::build_sah_bvh_fast(boxes, centroids, params);
+        if (config_.builder) {
+            binary_ = config_.builder(s.mesh);
+        } else {
+            ch05::sah_build_params params;
+            params.method = ch05::sah_method::binned, params.bins = 16;
+            binary_ = ch05::build_sah_bvh_fast(boxes, centroids, params);
+        }
         tris_.clear();
         if constexpr (wide_tree) {
             ch13::collapse_config cc;
@@ -104,6 +108,8 @@ public:
             binary_ = {};  // the wide tree and its blocks are all the wide walks read
             // Chapter 14's lone rays read the nodes' any-hit order (the packet walks do not).
             if constexpr (requires { policy_.order; }) ch13::order_children(wide_, policy_.order);
+            if constexpr (requires { policy_.octant; })
+                if (policy_.octant) ch13::order_by_octant(wide_);
             box_ = tree_frame(wide_.bounds);
             static const std::vector<ch13::vertex_block<wide_block>> no_corners;
             lanes_ = std::make_unique<lane_set>(wide_, no_corners, s.mesh);
@@ -280,7 +286,10 @@ private:
         const ch13::triangle_block<wide_block>* b = &wide_.blocks[ch13::leaf_first(ref)];
         for (std::uint32_t k = ch13::leaf_blocks(ref); k-- > 0 && lanes != 0; ++b)
             for (int i = 0; i < wide_block && lanes != 0; ++i) {
-                if (i > 0 && b->id[i] == b->id[i - 1]) break;  // lanes past the leaf's end repeat its last
+                // A lane that repeats the one before: the padding past the leaf's end (which repeats its last
+                // triangle), or a triangle an SBVH's leaves name twice, side by side once collapsed: the same
+                // answer again, skipped (not the end of the leaf: stopping there lost hits).
+                if (i > 0 && b->id[i] == b->id[i - 1]) continue;
                 const float v0[3] = {b->v0[0][i], b->v0[1][i], b->v0[2][i]};
                 const float e1[3] = {b->e1[0][i], b->e1[1][i], b->e1[2][i]};
                 const float e2[3] = {b->e2[0][i], b->e2[1][i], b->e2[2][i]};

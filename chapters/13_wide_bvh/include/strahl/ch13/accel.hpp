@@ -18,6 +18,8 @@ struct wide_config {
                                    // children in stored order (the default: no sorting)
     child_order order = child_order::collapsed;  // how nodes store their children (child_order.hpp): the
                                                  // any-hit walk's order
+    bool octant_order = false;     // closest hit in each node's order for the ray's octant (order_by_octant;
+                                   // width 8), not by the entry distances
     bool quantized = false;        // nodes quantised to bytes (quantized_node.hpp): width 8, blocks of 8
     bool watertight = false;       // chapter 15's watertight test in the leaves (width 8 or 16, blocks of 4)
                                    // instead of Moeller-Trumbore

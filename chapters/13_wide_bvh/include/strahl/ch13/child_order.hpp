@@ -51,6 +51,44 @@ void order_children(wide_bvh<N, M>& tree, child_order order) {
     }
 }
 
+// Closest hit's order per ray octant (wide_node::octant_order): for each of the 8 octants of directions, the
+// used children by the position of their box's centre along the octant's diagonal (nearest first), unused
+// slots last. An estimate of the front-to-back order made once, at build, in place of sorting the boxes a
+// ray enters by their entry distance (tinybvh's 8-wide nodes keep such an order, keyed by the near corner;
+// the centre measured better on Sponza, whose large boxes overlap: NOTES.md).
+template <int M>
+void order_by_octant(wide_bvh<8, M>& tree) {
+    for (wide_node<8>& n : tree.nodes) {
+        float centre[3][8];  // twice each child's centre; an unused slot's is never read
+        for (int a = 0; a < 3; ++a)
+            for (int k = 0; k < 8; ++k) centre[a][k] = n.lo[a][k] + n.hi[a][k];
+        for (int o = 0; o < 8; ++o) {
+            float key[8];
+            for (int k = 0; k < 8; ++k) {
+                float c = 0.0f;
+                for (int a = 0; a < 3; ++a) c += ((o >> a) & 1) ? -centre[a][k] : centre[a][k];
+                key[k] = n.used(k) ? c : 0x1p127f;  // unused slots last
+            }
+            // Each slot's place is the number of slots before it (smaller key, or an equal one at a lower
+            // slot): no branches, no allocation (a sort per octant cost more than the collapse on small trees).
+            std::uint32_t w = 0;
+            for (int k = 0; k < 8; ++k) {
+                int place = 0;
+                for (int j = 0; j < 8; ++j) place += (key[j] < key[k]) | ((key[j] == key[k]) & (j < k));
+                w |= std::uint32_t(k) << (3 * place);
+            }
+            n.octant_order[3 * o] = std::uint8_t(w), n.octant_order[3 * o + 1] = std::uint8_t(w >> 8);
+            n.octant_order[3 * o + 2] = std::uint8_t(w >> 16);
+        }
+    }
+}
+
+// The 24-bit word of octant o (wide_node::octant_order).
+[[gnu::always_inline]] inline std::uint32_t octant_word(const wide_node<8>& n, int o) {
+    const std::uint8_t* p = n.octant_order + 3 * o;
+    return std::uint32_t(p[0]) | std::uint32_t(p[1]) << 8 | std::uint32_t(p[2]) << 16;
+}
+
 // The bits of `slots` (a node's children by slot) moved to rank positions: bit j set where the j-th child
 // of n.order is in `slots`. The walks visit the result's bits in order, child n.order[j] for bit j.
 template <class Node>

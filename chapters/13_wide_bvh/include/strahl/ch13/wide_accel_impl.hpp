@@ -26,7 +26,7 @@ class wide_accel final : public per_ray_accel<wide_accel<N, M, Watertight, Node>
 public:
     wide_accel(std::string name, ch04::mesh_bvh_builder builder, const wide_config& c)
         : name_(std::move(name)), builder_(std::move(builder)), config_(c.collapse), order_(c.order),
-          any_nearest_(c.any_hit_nearest) {}
+          any_nearest_(c.any_hit_nearest), octant_(c.octant_order) {}
 
     std::string name() const override { return name_; }
     const collapse_stats& stats() const override { return tree_.stats; }
@@ -40,6 +40,8 @@ public:
             const ch04::bvh binary = builder_(s.mesh);
             wide_bvh<N, M> wide = collapse<N, M>(binary, s.mesh, config_);
             order_children(wide, order_);
+            if constexpr (N == 8)
+                if (octant_) order_by_octant(wide);
             if constexpr (std::is_same_v<Node, wide_node<N>>) tree_ = std::move(wide);
             else tree_ = quantize(wide);
         }
@@ -70,6 +72,8 @@ public:
     hit closest(const ray& query, Stats& stats) const {
         if (!set_) return hit{};
         return wide_closest<lanes_t>(tree_, *set_, query, stats, block_test(), [&](ray& r, auto&& leaf) {
+            if constexpr (N == 8 && std::is_same_v<Node, wide_node<N>>)
+                if (octant_) return wide_traverse<visit_order::octant>(tree_, r, stats, leaf);
             wide_traverse<visit_order::nearest>(tree_, r, stats, leaf);
         });
     }
@@ -103,6 +107,7 @@ private:
     collapse_config config_;
     child_order order_ = child_order::collapsed;
     bool any_nearest_ = false;
+    bool octant_ = false;
     wide_bvh<N, M, Node> tree_;
     std::vector<vertex_block<M>> corners_;  // watertight only: the corners of every block
     std::unique_ptr<block_lane_set<N, M, Watertight>> set_;  // the loose triangles and brute force's fallback
@@ -125,6 +130,8 @@ std::unique_ptr<wide_accel_base> make_accel(std::string name, ch04::bvh_builder 
 
 std::unique_ptr<wide_accel_base> make_accel_from_mesh(std::string name, ch04::mesh_bvh_builder builder, const wide_config& c) {
     const int key = c.width * 100 + c.block;
+    if (c.octant_order && c.width != 8)
+        throw std::invalid_argument("wide BVH: the order per ray octant is kept by nodes of 8");
     if (c.quantized && (key != 808 || c.watertight))
         throw std::invalid_argument("wide BVH: quantised nodes are built for nodes of 8 with blocks of 8, Moeller-Trumbore");
     if (c.watertight) {

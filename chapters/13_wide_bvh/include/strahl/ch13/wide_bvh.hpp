@@ -47,6 +47,10 @@ struct alignas(64) wide_node {
     // The any-hit walk's order (child_order.hpp): order[j] is the slot of the j-th child to visit; the
     // collapse writes 0, 1, ..., N-1 (the stored order). Closest hit ignores it.
     std::uint8_t order[N];
+    // Closest hit's order per ray octant (child_order.hpp, order_by_octant), 8-wide nodes only (in the
+    // padding): for octant o (bit a set where the direction's component a is negative), bits 3j to 3j + 2
+    // of the 24-bit little-endian word at octant_order[3 o] are the slot of the j-th child to visit.
+    std::uint8_t octant_order[N == 8 ? 24 : 1];
 
     aabb box(int i) const {
         return {vec3(lo[0][i], lo[1][i], lo[2][i]), vec3(hi[0][i], hi[1][i], hi[2][i])};

@@ -33,7 +33,9 @@ template <int N>
 struct plane_rows {
     std::size_t near_row[3], far_row[3];
     int near_q[3], far_q[3];  // the same rows of a quantised node (qnode::row)
+    int octant = 0;           // bit a set where dir[a] is negative (wide_node::octant_order)
     explicit plane_rows(const vec3& dir) {
+        octant = int(std::signbit(dir.x)) | int(std::signbit(dir.y)) << 1 | int(std::signbit(dir.z)) << 2;
         for (int a = 0; a < 3; ++a) {
             near_q[a] = std::signbit(dir[a]) ? 3 + a : a;
             far_q[a] = std::signbit(dir[a]) ? a : 3 + a;
@@ -171,6 +173,7 @@ enum class visit_order {
     stored,   // any hit: the children in the order the node stores them, no sorting: any hit ends the walk,
               // and the sort costs more than it saves (Embree's any-hit walk does not sort either)
     ranked,   // any hit: the children in the node's own order (wide_node::order, child_order.hpp)
+    octant,   // closest hit: the children in the node's order for the ray's octant (wide_node::octant_order)
 };
 
 // Exercise 13.3's push, as the walk calls it.
@@ -214,6 +217,19 @@ void wide_walk(const wide_bvh<N, M, Node>& tree, const Slab& s, float below, flo
                 if constexpr (Order == visit_order::nearest) {
                     // Several: the nearest now, the others on the stack (exercise 13.3).
                     ref = push(bits, ts, n.child, stack, top);
+                } else if constexpr (Order == visit_order::octant) {
+                    // Several, in the order for the ray's octant: the hit bits moved to positions, the first
+                    // now, the others on the stack, the last deepest.
+                    const std::uint32_t w = octant_word(n, s.octant);
+                    unsigned ranked = 0;
+                    for (int j = 0; j < N; ++j) ranked |= ((bits >> ((w >> (3 * j)) & 7)) & 1u) << j;
+                    ref = n.child[(w >> (3 * std::countr_zero(ranked))) & 7];
+                    for (unsigned rest = ranked & (ranked - 1); rest != 0;) {
+                        const int j = 31 - std::countl_zero(rest);
+                        const int k = (w >> (3 * j)) & 7;
+                        stack[top++] = {n.child[k], ts[k]};
+                        rest &= ~(1u << j);
+                    }
                 } else if constexpr (Order == visit_order::ranked) {
                     // Several, in the node's order: the hit bits moved to rank positions, the first ranked
                     // now, the others on the stack, the last ranked deepest.

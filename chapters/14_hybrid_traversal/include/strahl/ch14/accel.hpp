@@ -28,10 +28,15 @@ struct hybrid_config {
     // The any-hit order of the lone walk (chapter 13's child_order.hpp): leaves first, then larger boxes, for
     // rays without end; collapsed: the stored order for every ray ("-stored" in the race).
     ch13::child_order order = ch13::child_order::leaves_then_area;
+    ch04::mesh_bvh_builder builder;  // as chapter 12's packet_config::builder (empty: chapter 05's binned SAH)
+    // Closest hit of the rays that leave: each node's children in its order for the ray's octant (chapter
+    // 13's order_by_octant), not sorted by entry distance.
+    bool octant_order = false;
 };
 
 // One line: "hybrid, 16 lanes, 4x4 tiles, leave at <= 4 lanes" (or "... threshold per packet"), and
-// "; strict boxes, tested from tmin (not exact)" for the strict variant.
+// "; strict boxes, tested from tmin (not exact)" for the strict variant, "; lone rays in the octant's
+// order" for octant_order.
 std::string describe(const hybrid_config& c);
 std::string threshold_name(int threshold);
 

@@ -75,6 +75,7 @@ struct hybrid_hooks {
     int threshold;
     bool strict = false;  // hybrid_config::strict: the lone walk tests boxes from tmin, not tmin - slack
     bool ranked = false;  // any hit: rays without end visit children in the node's order (child_order.hpp)
+    bool octant = false;  // closest hit: children in the node's order for the ray's octant (child_order.hpp)
 
     [[gnu::always_inline]] simd::vmask<K> box(const ch12::lane_rays<K>& r, const float* bmin, const float* bmax,
                                               int octant, simd::vfloat<K>& entry) const {
@@ -117,8 +118,10 @@ struct hybrid_hooks {
             return false;
         };
         const float below = strict ? 0.0f : l.slack;
-        if constexpr (!Any)
-            ch13::wide_walk<ch13::visit_order::nearest>(tree, s, below, l.slack, r, stats, leaf, ref, nearest_push<N>{});
+        if constexpr (!Any) {
+            if (octant) ch13::wide_walk<ch13::visit_order::octant>(tree, s, below, l.slack, r, stats, leaf, ref);
+            else ch13::wide_walk<ch13::visit_order::nearest>(tree, s, below, l.slack, r, stats, leaf, ref, nearest_push<N>{});
+        }
         else if (ranked && std::isinf(r.tmax))
             ch13::wide_walk<ch13::visit_order::ranked>(tree, s, below, l.slack, r, stats, leaf, ref, nearest_push<N>{});
         else
