@@ -72,7 +72,7 @@ image primary_image(const scene& s, std::span<const ray> rays, const std::vector
 // new ones follow them.
 int race_processes(int n, bool more, bool reverse, int argc, const char* const* argv,
                    const std::filesystem::path& out, const std::filesystem::path& cache_dir,
-                   const std::vector<std::pair<std::string, std::string>>& compare) {
+                   const std::vector<std::pair<std::string, std::string>>& compare, int threads) {
     // Each child gets this command line without --more, --reverse and --compare, and its own --out.
     std::vector<std::string> base;
     for (int i = 1; i < argc; ++i) {
@@ -119,7 +119,7 @@ int race_processes(int n, bool more, bool reverse, int argc, const char* const* 
     for (const combined_row& c : combined) rows.push_back(c.row);
     print_table(std::cout, rows);
     const std::string machine = machine_name();
-    std::ofstream(out / "race.csv") << to_csv(rows);
+    std::ofstream(out / "race.csv") << to_csv(rows, this_machine(threads));
     std::ofstream(out / "race.md") << to_markdown(rows, machine, n);
     std::ofstream(out / "spread.md") << spread_markdown(combined, n, machine);
     write_svg(out / "spread.svg", to_svg(spread_plot(results), 2, 700, 400));
@@ -246,7 +246,8 @@ int run(int argc, const char* const* argv) {
     const std::filesystem::path cache_dir = args.has("cache") ? std::filesystem::path(args.get("cache")) : out / "reference_cache";
     const auto started = std::filesystem::file_time_type::clock::now();
     if (processes > 1 || args.has("more"))
-        return race_processes(processes, args.has("more"), args.has("reverse"), argc, argv, out, cache_dir, compare);
+        return race_processes(processes, args.has("more"), args.has("reverse"), argc, argv, out, cache_dir, compare,
+                              threads);
 
     std::vector<ray_kind> kinds;
     for (const std::string& k : split(args.get("rays"))) kinds.push_back(parse_ray_kind(k));
@@ -363,7 +364,7 @@ int run(int argc, const char* const* argv) {
     add_embree_ratios(rows);
     print_table(std::cout, rows);
     const std::string machine = machine_name();
-    std::ofstream(out / "race.csv") << to_csv(rows);
+    std::ofstream(out / "race.csv") << to_csv(rows, this_machine(threads));
     std::ofstream(out / "race.md") << to_markdown(rows, machine);
     write_plots(out, rows);
     std::printf("\nmachine: %s; the race took %.1f s\n", machine.c_str(), total.seconds());

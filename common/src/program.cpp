@@ -373,13 +373,20 @@ std::string csv_field(const std::string& text) {
 }
 
 std::vector<csv_row> read_csv(const std::filesystem::path& file, const std::string& header, const std::string& what) {
+    return read_csv(file, header, "", what);
+}
+
+std::vector<csv_row> read_csv(const std::filesystem::path& file, const std::string& header, const std::string& tail,
+                              const std::string& what) {
     std::ifstream f(file);
     if (!f) throw std::runtime_error("cannot read '" + file.string() + "'");
     std::string line;
-    if (!std::getline(f, line) || line != header)
-        throw std::runtime_error("'" + file.string() + "' is not " + what + " (its first line should be '" + header +
-                                 "')");
-    const std::size_t fields = split_fields(header).value().size();
+    const std::string longer = tail.empty() ? header : header + "," + tail;
+    if (!std::getline(f, line) || (line != header && line != longer))
+        throw std::runtime_error("'" + file.string() + "' is not " + what + " (its first line should be '" + longer +
+                                 "'" + (tail.empty() ? "" : ", or '" + header + "' in files written before its last columns") +
+                                 ")");
+    const std::size_t fields = split_fields(line).value().size();
     std::vector<csv_row> rows;
     for (int number = 2; std::getline(f, line); number += 1 + int(std::count(line.begin(), line.end(), '\n'))) {
         if (line.empty()) continue;

@@ -5,7 +5,8 @@ namespace strahl {
 
 std::vector<race_csv_row> read_race_rows(const std::filesystem::path& file) {
     std::vector<race_csv_row> rows;
-    for (const csv_row& c : read_csv(file, race_csv_header, "a race.csv written by the race (chapter 16)")) {
+    for (const csv_row& c : read_csv(file, race_csv_header, race_csv_machine_header,
+                                     "a race.csv written by the race (chapter 16)")) {
         const auto number = [&](std::size_t k) { return c.cells[k].empty() ? 0.0 : csv_number(file, c, k); };
         race_csv_row r;
         r.scene = c.cells[0].substr(0, c.cells[0].find('.'));
@@ -15,6 +16,7 @@ std::vector<race_csv_row> read_race_rows(const std::filesystem::path& file) {
         r.build_ms = number(7), r.memory_bytes = number(8);
         r.closest_mrays_s = number(10), r.closest_differing = std::size_t(number(16));
         r.any_mrays_s = number(17), r.any_differing = std::size_t(number(22));
+        if (c.cells.size() > 23) r.cpu = c.cells[23];
         rows.push_back(std::move(r));
     }
     return rows;

@@ -28,6 +28,8 @@ race_row row(const std::string& accel, const std::string& rays, double build_ms,
     return r;
 }
 
+const machine_columns here{"AMD EPYC", "AVX512", "2026-12-05", 1};
+
 }  // namespace
 
 TEST_CASE("ch16 processes: race.csv reads back as to_csv wrote it", "[ch16][processes]") {
@@ -38,10 +40,10 @@ TEST_CASE("ch16 processes: race.csv reads back as to_csv wrote it", "[ch16][proc
     rows.back().closest = {};  // shadow rays: no closest-hit query
     add_embree_ratios(rows);
     const auto dir = scratch_dir("ch16_processes_csv");
-    std::ofstream(dir / "race.csv") << to_csv(rows);
+    std::ofstream(dir / "race.csv") << to_csv(rows, here);
     const std::vector<race_row> back = read_race_csv(dir / "race.csv");
     REQUIRE(back.size() == rows.size());
-    CHECK(to_csv(back) == to_csv(rows));
+    CHECK(to_csv(back, here) == to_csv(rows, here));
     CHECK(back[0].closest.differing == 3);
     CHECK(back[0].exact);
     CHECK_FALSE(back[1].exact);
@@ -53,17 +55,40 @@ TEST_CASE("ch16 processes: race.csv reads back as to_csv wrote it", "[ch16][proc
 
     // A scene named with a comma and a quote (a file stem may hold both) reads back whole.
     rows[0].scene = rows[1].scene = "sponza, \"inside\"";
-    std::ofstream(dir / "named.csv") << to_csv(rows);
+    std::ofstream(dir / "named.csv") << to_csv(rows, here);
     const std::vector<race_row> named = read_race_csv(dir / "named.csv");
     REQUIRE(named.size() == rows.size());
     CHECK(named[0].scene == rows[0].scene);
     CHECK(named[0].triangles == rows[0].triangles);
-    CHECK(to_csv(named) == to_csv(rows));
+    CHECK(to_csv(named, here) == to_csv(rows, here));
+
+    // The machine's columns: each row names the CPU, the threads, Embree's kernels and the date; a row read
+    // back keeps its CPU. A file written before those columns still reads (its rows name no CPU).
+    const std::string written = to_csv(rows, here);
+    CHECK(written.substr(0, written.find('\n')) == std::string(race_csv_header) + "," + race_csv_machine_header);
+    CHECK(written.find(",AMD EPYC,1,AVX512,2026-12-05\n") != std::string::npos);
+    CHECK(back[0].cpu == "AMD EPYC");
+    CHECK(to_csv(back, machine_columns{"Intel Xeon", "AVX2", "2027-01-01", 2}).find(",AMD EPYC,2,AVX2,2027-01-01\n") !=
+          std::string::npos);
+    std::string old;
+    for (std::size_t at = 0; at < written.size();) {  // every line without its last four fields
+        std::string line = written.substr(at, written.find('\n', at) - at);
+        at += line.size() + 1;
+        for (int k = 0; k < 4; ++k) line.erase(line.rfind(','));
+        old += line + "\n";
+    }
+    std::ofstream(dir / "old.csv") << old;
+    const std::vector<race_row> before = read_race_csv(dir / "old.csv");
+    REQUIRE(before.size() == rows.size());
+    CHECK(before[0].cpu.empty());
+    CHECK(before[0].build_ms == back[0].build_ms);
+    CHECK(read_race_rows(dir / "old.csv").size() == rows.size());  // the chapters' reader alike
+    CHECK(read_race_rows(dir / "race.csv")[0].cpu == "AMD EPYC");
 
     // Anything else is refused, naming the file.
     std::ofstream(dir / "other.csv") << "scene,structure\nteapot,x\n";
     CHECK_THROWS_WITH(read_race_csv(dir / "other.csv"), Catch::Contains("other.csv"));
-    std::string text = to_csv(rows);
+    std::string text = to_csv(rows, here);
     text.replace(text.find("1.250"), 5, "fast!");
     std::ofstream(dir / "bad.csv") << text;
     CHECK_THROWS_WITH(read_race_csv(dir / "bad.csv"), Catch::Contains("line 2"));
@@ -112,6 +137,14 @@ TEST_CASE("ch16 processes: figures combine as medians across processes", "[ch16]
     REQUIRE(alone.size() == 1);
     CHECK_FALSE(alone[0].row.closest_vs_embree);
     CHECK(alone[0].closest_vs_embree.samples == 0);
+
+    // One table, one machine: processes that ran on two CPUs do not combine.
+    std::vector<std::vector<race_row>> two_cpus = {p[0], p[0]};
+    for (race_row& r : two_cpus[0]) r.cpu = "AMD EPYC";
+    for (race_row& r : two_cpus[1]) r.cpu = "Intel Xeon";
+    CHECK_THROWS_WITH(combine_processes(two_cpus), Catch::Contains("different CPUs"));
+    for (race_row& r : two_cpus[1]) r.cpu = "AMD EPYC";
+    CHECK(combine_processes(two_cpus).size() == 2);
 
     // Another race's process (other rays, or another scene under the same name) does not combine.
     std::vector<std::vector<race_row>> other = {p[0], p[0]};

@@ -1,6 +1,7 @@
 // The race's per-process ratios for chapter 15 (race_ratios.hpp).
 #include "strahl/ch15/race_ratios.hpp"
 #include "strahl/program.hpp"
+#include "strahl/race_csv.hpp"
 #include <algorithm>
 #include <cstdio>
 #include <map>
@@ -12,11 +13,6 @@
 namespace strahl::ch15 {
 
 namespace {
-const char* const race_header =
-    "scene,triangles,structure,chapter,exact,rays,ray_count,build_ms,memory_bytes,sah_cost,closest_mrays_s,"
-    "closest_runs,closest_vs_embree,closest_box_per_ray,closest_prim_per_ray,closest_nodes_per_ray,closest_differing,"
-    "any_mrays_s,any_runs,any_vs_embree,any_box_per_ray,any_prim_per_ray,any_differing";
-
 // What each row is compared with.
 const std::pair<const char*, const char*> pairs[] = {
     {"ch15-watertight-fast", "ch15-mt-fast"},     {"ch15-watertight-bvh16", "ch13-bvh16"},
@@ -37,7 +33,7 @@ std::string race_ratios(const std::filesystem::path& race_dir) {
     std::map<std::tuple<std::string, std::string, std::string, std::string>, std::vector<double>> ratios;
     for (const auto& file : files) {
         std::map<std::tuple<std::string, std::string, std::string>, double> speed;  // closest; any for shadow rays
-        for (const csv_row& r : read_csv(file, race_header, "a race.csv written by the race (chapter 16)")) {
+        for (const csv_row& r : read_csv(file, race_csv_header, race_csv_machine_header, "a race.csv written by the race (chapter 16)")) {
             const bool shadow = r.cells[5] == "shadow";
             speed[{r.cells[0], r.cells[5], r.cells[2]}] = csv_number(file, r, shadow ? 17 : 10);
         }

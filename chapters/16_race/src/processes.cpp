@@ -75,7 +75,7 @@ std::string cell(const spread& s, const char* f) {
 
 std::vector<race_row> read_race_csv(const std::filesystem::path& file) {
     std::vector<race_row> rows;
-    for (const csv_row& c : read_csv(file, race_csv_header, "a race.csv written by the race")) {
+    for (const csv_row& c : read_csv(file, race_csv_header, race_csv_machine_header, "a race.csv written by the race")) {
         race_row r;
         r.scene = c.cells[0];
         r.triangles = std::size_t(csv_number(file, c, 1));
@@ -90,6 +90,7 @@ std::vector<race_row> read_race_csv(const std::filesystem::path& file) {
         r.closest_vs_embree = optional_number(file, c, 12);
         r.any = read_query(file, c, 17, 20, 21, std::nullopt, 22);
         r.any_vs_embree = optional_number(file, c, 19);
+        if (c.cells.size() > 23) r.cpu = c.cells[23];
         rows.push_back(std::move(r));
     }
     return rows;
@@ -109,6 +110,11 @@ std::vector<combined_row> combine_processes(const std::vector<std::vector<race_r
     for (const std::string& key : order) {
         const std::vector<const race_row*>& v = samples[key];
         // Only the same race combines: the same scene (its triangle count) and the same rays (their count).
+        // One table, one machine: processes that name their CPUs must name the same one.
+        for (const race_row* r : v)
+            if (!r->cpu.empty() && !v.front()->cpu.empty() && r->cpu != v.front()->cpu)
+                throw std::runtime_error("the processes ran on different CPUs (" + v.front()->cpu + ", " + r->cpu +
+                                         "): one table, one machine (run without --more to start afresh)");
         for (const race_row* r : v)
             if (r->triangles != v.front()->triangles || std::max(r->closest.rays, r->any.rays) !=
                                                             std::max(v.front()->closest.rays, v.front()->any.rays))

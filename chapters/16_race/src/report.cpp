@@ -1,8 +1,11 @@
 #include "strahl/race/report.hpp"
+#include "strahl/race/embree_accel.hpp"
 #include "strahl/plot.hpp"
 #include "strahl/program.hpp"
 #include <algorithm>
 #include <cstdio>
+#include <ctime>
+#include <fstream>
 #include <map>
 #include <ostream>
 #include <sstream>
@@ -67,9 +70,25 @@ void print_table(std::ostream& out, const std::vector<race_row>& rows) {
     }
 }
 
-std::string to_csv(const std::vector<race_row>& rows) {
+machine_columns this_machine(int threads) {
+    machine_columns m;
+    std::ifstream cpu("/proc/cpuinfo");
+    std::string line;
+    m.cpu = "unknown CPU";
+    while (std::getline(cpu, line))
+        if (line.rfind("model name", 0) == 0) { m.cpu = line.substr(line.find(':') + 2); break; }
+    m.kernels = embree_configuration().kernels.empty() ? "none" : embree_configuration().kernels;
+    m.threads = threads;
+    const std::time_t now = std::time(nullptr);
+    char date[16];
+    std::strftime(date, sizeof date, "%Y-%m-%d", std::gmtime(&now));
+    m.date = date;
+    return m;
+}
+
+std::string to_csv(const std::vector<race_row>& rows, const machine_columns& machine) {
     std::ostringstream out;
-    out << race_csv_header << '\n';
+    out << race_csv_header << ',' << race_csv_machine_header << '\n';
     auto o = [](const std::optional<double>& v) { return v ? fmt("%.6g", *v) : std::string(); };
     for (const race_row& r : rows) {
         out << csv_field(r.scene) << ',' << r.triangles << ',' << csv_field(r.accel) << ',' << csv_field(r.chapter) << ','
@@ -79,7 +98,8 @@ std::string to_csv(const std::vector<race_row>& rows) {
             << o(r.closest.nodes_per_ray) << ',' << (r.closest.runs ? std::to_string(r.closest.differing) : "") << ','
             << (r.any.runs ? fmt("%.6g", r.any.mrays) : "") << ',' << r.any.runs << ',' << o(r.any_vs_embree) << ','
             << o(r.any.box_per_ray) << ',' << o(r.any.prim_per_ray) << ','
-            << (r.any.runs ? std::to_string(r.any.differing) : "") << '\n';
+            << (r.any.runs ? std::to_string(r.any.differing) : "") << ',' << csv_field(r.cpu.empty() ? machine.cpu : r.cpu)
+            << ',' << machine.threads << ',' << csv_field(machine.kernels) << ',' << machine.date << '\n';
     }
     return out.str();
 }

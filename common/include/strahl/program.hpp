@@ -135,6 +135,10 @@ struct csv_row {
     std::vector<std::string> cells;
 };
 std::vector<csv_row> read_csv(const std::filesystem::path& file, const std::string& header, const std::string& what);
+// The same for a format that grew columns at its end: the first line is `header`, or `header` followed by
+// ",tail" (the later version's columns); each row has as many fields as its file's first line.
+std::vector<csv_row> read_csv(const std::filesystem::path& file, const std::string& header, const std::string& tail,
+                              const std::string& what);
 // Field k of a row as a finite number >= 0 (subnormals included); throws std::runtime_error naming the file
 // and line otherwise, saying "out of range" for numbers no double holds (1e999, 1e-999).
 double csv_number(const std::filesystem::path& file, const csv_row& row, std::size_t k);

@@ -15,6 +15,12 @@ inline constexpr const char* race_csv_header =
     "closest_mrays_s,closest_runs,closest_vs_embree,closest_box_per_ray,closest_prim_per_ray,closest_nodes_per_ray,"
     "closest_differing,any_mrays_s,any_runs,any_vs_embree,any_box_per_ray,any_prim_per_ray,any_differing";
 
+// The columns race.csv gained on 2026-12-05, at its end: the machine that ran the race (one table, one
+// machine). cpu: the model /proc/cpuinfo names ("AMD EPYC"); threads: the tracing threads (race --threads);
+// kernels: the instruction set of Embree's kernels ("AVX512"; "none" without Embree); date: YYYY-MM-DD (UTC).
+// Readers take files with and without them.
+inline constexpr const char* race_csv_machine_header = "cpu,threads,kernels,date";
+
 // One row, the columns the plots use. scene is the file's stem ("bunny" for bunny.ply); rays is primary,
 // diffuse or shadow; a speed the race left empty (shadow rays have no closest-hit speed) reads 0.
 struct race_csv_row {
@@ -22,6 +28,7 @@ struct race_csv_row {
     std::size_t triangles = 0, ray_count = 0;
     double build_ms = 0, memory_bytes = 0, closest_mrays_s = 0, any_mrays_s = 0;
     std::size_t closest_differing = 0, any_differing = 0;
+    std::string cpu;  // empty in files written before the machine columns
 };
 
 // Reads a race.csv (a race's own, or the medians of race --processes N); throws std::runtime_error naming

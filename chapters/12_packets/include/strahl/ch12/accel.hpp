@@ -32,7 +32,7 @@ struct packet_config {
     int image_width = 0;
     // The binary tree the walks start from (collapsed for the wide walks): empty for chapter 05's binned SAH
     // tree (16 bins), else a builder handed the mesh (chapter 16's registry passes chapter 09's SBVH).
-    ch04::mesh_bvh_builder builder;
+    ch04::mesh_bvh_builder builder{};
 };
 
 // One line: "wide walk, 16 lanes, 4x4 tiles".

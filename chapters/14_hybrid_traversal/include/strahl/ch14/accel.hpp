@@ -28,7 +28,7 @@ struct hybrid_config {
     // The any-hit order of the lone walk (chapter 13's child_order.hpp): leaves first, then larger boxes, for
     // rays without end; collapsed: the stored order for every ray ("-stored" in the race).
     ch13::child_order order = ch13::child_order::leaves_then_area;
-    ch04::mesh_bvh_builder builder;  // as chapter 12's packet_config::builder (empty: chapter 05's binned SAH)
+    ch04::mesh_bvh_builder builder{};  // as chapter 12's packet_config::builder (empty: chapter 05's binned SAH)
     // Closest hit of the rays that leave: each node's children in its order for the ray's octant (chapter
     // 13's order_by_octant), not sorted by entry distance.
     bool octant_order = false;

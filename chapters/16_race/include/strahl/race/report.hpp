@@ -22,7 +22,16 @@ struct race_row {
     std::optional<double> sah;
     query_result closest, any;
     std::optional<double> closest_vs_embree, any_vs_embree;  // speed ratio to embree-medium, same run
+    std::string cpu;  // the machine's CPU where the row was read from a file that names it, else empty
 };
+
+// race.csv's machine columns (strahl/race_csv.hpp: race_csv_machine_header).
+struct machine_columns {
+    std::string cpu, kernels, date;
+    int threads = 1;
+};
+// This machine's, for a race tracing with `threads` threads: the CPU's model name, Embree's kernels, today.
+machine_columns this_machine(int threads);
 
 // Fills the ratio columns from the embree-medium rows of the same scene and ray set.
 void add_embree_ratios(std::vector<race_row>& rows);
@@ -30,7 +39,8 @@ void add_embree_ratios(std::vector<race_row>& rows);
 void print_table(std::ostream& out, const std::vector<race_row>& rows);
 // race.csv's first line: strahl::race_csv_header (strahl/race_csv.hpp), which the chapters read back.
 using strahl::race_csv_header;
-std::string to_csv(const std::vector<race_row>& rows);
+// Every row with the machine's columns; a row that names its own CPU (read from a process's file) keeps it.
+std::string to_csv(const std::vector<race_row>& rows, const machine_columns& machine);
 // processes > 1: the rows are medians across that many processes (race --processes), and the text says so.
 std::string to_markdown(const std::vector<race_row>& rows, const std::string& machine, int processes = 1);
 
