@@ -34,11 +34,7 @@ std::vector<std::string> split(const std::string& s) {
 }
 
 std::string machine_name() {
-    std::ifstream cpu("/proc/cpuinfo");
-    std::string line, model = "unknown CPU";
-    while (std::getline(cpu, line))
-        if (line.rfind("model name", 0) == 0) { model = line.substr(line.find(':') + 2); break; }
-    return model + ", " + std::to_string(std::thread::hardware_concurrency()) + " hardware threads; " +
+    return this_machine(1).cpu + ", " + std::to_string(std::thread::hardware_concurrency()) + " hardware threads; " +
            embree_configuration().summary();
 }
 

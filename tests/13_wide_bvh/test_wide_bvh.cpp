@@ -237,7 +237,7 @@ TEST_CASE("ch13 octant order: per octant a permutation of the slots, used childr
     int reordered = 0;
     for (const wide_node<8>& n : w.nodes)
         for (int o = 0; o < 8; ++o) {
-            const std::uint32_t word = octant_word(n, o);
+            const std::uint32_t word = n.octant_word(o);
             CHECK(word < (1u << 24));
             unsigned seen = 0;
             float last = -inf;

@@ -81,11 +81,7 @@ public:
             n.order[k] = std::uint8_t(k);
         }
         if constexpr (N == 8)
-            for (int o = 0; o < 8; ++o) {  // the stored order for every octant
-                const std::uint32_t w = 0xFAC688u;  // slots 0..7, 3 bits each
-                n.octant_order[3 * o] = std::uint8_t(w), n.octant_order[3 * o + 1] = std::uint8_t(w >> 8),
-                n.octant_order[3 * o + 2] = std::uint8_t(w >> 16);
-            }
+            for (int o = 0; o < 8; ++o) n.set_octant_word(o, 0xFAC688u);  // the stored order: slots 0..7, 3 bits each
         return index;
     }
 
@@ -232,12 +228,7 @@ template <int N, int M>
 wide_bvh<N, M> collapse(const ch04::bvh& tree, const triangle_mesh& mesh, const collapse_config& config) {
     timer clock;
     wide_bvh<N, M> out;
-    out.bounds = tree.bounds;
-    if (!tree.bounds.is_empty()) {
-        out.centre = tree.bounds.centroid();
-        const vec3 e = tree.bounds.extent();
-        out.diagonal = (e.x + e.y + e.z);  // >= the diagonal's length
-    }
+    out.set_bounds(tree.bounds);
     out.loose = tree.loose;
     if (tree.nodes.empty()) return out;
     collapser<N, M> c(tree, mesh, out);

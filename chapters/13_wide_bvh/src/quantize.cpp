@@ -83,12 +83,7 @@ wide_bvh<N, M, qnode<N>> quantize(const wide_bvh<N, M>& tree) {
             bounds.grow(d);
         }
     }
-    out.bounds = bounds;
-    if (!bounds.is_empty()) {
-        out.centre = bounds.centroid();
-        const vec3 e = bounds.extent();
-        out.diagonal = (e.x + e.y + e.z);  // >= the diagonal's length, as collapse() sets it
-    }
+    out.set_bounds(bounds);
     return out;
 }
 

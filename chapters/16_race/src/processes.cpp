@@ -109,18 +109,18 @@ std::vector<combined_row> combine_processes(const std::vector<std::vector<race_r
     std::vector<combined_row> out;
     for (const std::string& key : order) {
         const std::vector<const race_row*>& v = samples[key];
-        // Only the same race combines: the same scene (its triangle count) and the same rays (their count).
-        // One table, one machine: processes that name their CPUs must name the same one.
-        for (const race_row* r : v)
-            if (!r->cpu.empty() && !v.front()->cpu.empty() && r->cpu != v.front()->cpu)
-                throw std::runtime_error("the processes ran on different CPUs (" + v.front()->cpu + ", " + r->cpu +
-                                         "): one table, one machine (run without --more to start afresh)");
-        for (const race_row* r : v)
+        for (const race_row* r : v) {
+            // Only the same race combines: the same scene (its triangle count) and the same rays (their count)...
             if (r->triangles != v.front()->triangles || std::max(r->closest.rays, r->any.rays) !=
                                                             std::max(v.front()->closest.rays, v.front()->any.rays))
                 throw std::runtime_error("the processes did not run the same race: " + r->scene + ", " + r->ray_set +
                                          ", " + r->accel + " has other triangles or rays in one of them (run without --more "
                                          "to start afresh)");
+            // ... on one machine: processes that name their CPUs must name the same one.
+            if (!r->cpu.empty() && !v.front()->cpu.empty() && r->cpu != v.front()->cpu)
+                throw std::runtime_error("the processes ran on different CPUs (" + v.front()->cpu + ", " + r->cpu +
+                                         "): one table, one machine (run without --more to start afresh)");
+        }
         combined_row c;
         c.row = *v.front();
         std::vector<double> build, closest, any, closest_ratio, any_ratio;

@@ -87,15 +87,15 @@ public:
     void build(const scene& s) override {
         set_.reset(), lanes_.reset();
         frame_ = ray_frame(s.mesh.bounds());
-        std::vector<aabb> boxes(s.mesh.triangle_count());
-        std::vector<vec3> centroids(boxes.size());
-        for (std::size_t i = 0; i < boxes.size(); ++i) {
-            const auto t = s.mesh.triangle(i);
-            boxes[i] = aabb{}.grow(t[0]).grow(t[1]).grow(t[2]), centroids[i] = boxes[i].centroid();
-        }
         if (config_.builder) {
             binary_ = config_.builder(s.mesh);
         } else {
+            std::vector<aabb> boxes(s.mesh.triangle_count());
+            std::vector<vec3> centroids(boxes.size());
+            for (std::size_t i = 0; i < boxes.size(); ++i) {
+                const auto t = s.mesh.triangle(i);
+                boxes[i] = aabb{}.grow(t[0]).grow(t[1]).grow(t[2]), centroids[i] = boxes[i].centroid();
+            }
             ch05::sah_build_params params;
             params.method = ch05::sah_method::binned, params.bins = 16;
             binary_ = ch05::build_sah_bvh_fast(boxes, centroids, params);

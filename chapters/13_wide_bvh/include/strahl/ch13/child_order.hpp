@@ -77,16 +77,9 @@ void order_by_octant(wide_bvh<8, M>& tree) {
                 for (int j = 0; j < 8; ++j) place += (key[j] < key[k]) | ((key[j] == key[k]) & (j < k));
                 w |= std::uint32_t(k) << (3 * place);
             }
-            n.octant_order[3 * o] = std::uint8_t(w), n.octant_order[3 * o + 1] = std::uint8_t(w >> 8);
-            n.octant_order[3 * o + 2] = std::uint8_t(w >> 16);
+            n.set_octant_word(o, w);
         }
     }
-}
-
-// The 24-bit word of octant o (wide_node::octant_order).
-[[gnu::always_inline]] inline std::uint32_t octant_word(const wide_node<8>& n, int o) {
-    const std::uint8_t* p = n.octant_order + 3 * o;
-    return std::uint32_t(p[0]) | std::uint32_t(p[1]) << 8 | std::uint32_t(p[2]) << 16;
 }
 
 // The bits of `slots` (a node's children by slot) moved to rank positions: bit j set where the j-th child

@@ -51,6 +51,13 @@ struct alignas(64) wide_node {
     // padding): for octant o (bit a set where the direction's component a is negative), bits 3j to 3j + 2
     // of the 24-bit little-endian word at octant_order[3 o] are the slot of the j-th child to visit.
     std::uint8_t octant_order[N == 8 ? 24 : 1];
+    std::uint32_t octant_word(int o) const {
+        const std::uint8_t* p = octant_order + 3 * o;
+        return std::uint32_t(p[0]) | std::uint32_t(p[1]) << 8 | std::uint32_t(p[2]) << 16;
+    }
+    void set_octant_word(int o, std::uint32_t w) {
+        for (int b = 0; b < 3; ++b) octant_order[3 * o + b] = std::uint8_t(w >> (8 * b));
+    }
 
     aabb box(int i) const {
         return {vec3(lo[0][i], lo[1][i], lo[2][i]), vec3(hi[0][i], hi[1][i], hi[2][i])};
@@ -96,6 +103,14 @@ struct wide_bvh {
     std::vector<std::uint32_t> loose;  // primitives the binary tree left out (non-finite boxes)
     collapse_stats stats;
 
+    // The bounds, with the centre and diagonal the walk's slack reads.
+    void set_bounds(const aabb& b) {
+        bounds = b;
+        if (b.is_empty()) return;
+        centre = b.centroid();
+        const vec3 e = b.extent();
+        diagonal = e.x + e.y + e.z;  // >= the diagonal's length
+    }
     std::size_t memory_bytes() const {
         return nodes.size() * sizeof(Node) + blocks.size() * sizeof(triangle_block<M>) + loose.size() * 4;
     }

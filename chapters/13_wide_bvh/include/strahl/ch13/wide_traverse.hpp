@@ -220,7 +220,7 @@ void wide_walk(const wide_bvh<N, M, Node>& tree, const Slab& s, float below, flo
                 } else if constexpr (Order == visit_order::octant) {
                     // Several, in the order for the ray's octant: the hit bits moved to positions, the first
                     // now, the others on the stack, the last deepest.
-                    const std::uint32_t w = octant_word(n, s.octant);
+                    const std::uint32_t w = n.octant_word(s.octant);
                     unsigned ranked = 0;
                     for (int j = 0; j < N; ++j) ranked |= ((bits >> ((w >> (3 * j)) & 7)) & 1u) << j;
                     ref = n.child[(w >> (3 * std::countr_zero(ranked))) & 7];
