@@ -61,14 +61,22 @@
 #       quantities within its columns and rows (a last row of Mrays/s below ratio rows). Use sparingly.
 # The keywords labels:, derived:, join: and columns: follow the sources.
 #
+# One machine per table. A source that records where it was measured (a CSV's cpu column, as the race's
+# race.csv has; a race spread's "Machine: NAME," line) names its processor; the sources of one table must
+# name one between them, and the text from the table's heading (the nearest line starting with #) down to
+# the table must name it as texts write it: "Intel(R) Xeon(R) Processor" is Intel Xeon, "AMD EPYC 7B13
+# 64-Core Processor" AMD EPYC 7B13. Sources that record no machine (older CSVs) are not checked for it.
+#
 # Output: FILE:LINE: token 'X' not found in CSV(s) ... for each number that matches nothing (with the
 # nearest value of the sources); FILE:LINE: column 'HEADER' [(number k of its cells)]: no single source
 # column holds all its numbers (best: the source column that holds most of them, how many; misses: the
 # tokens it lacks, with their lines), LINE being the table's header (under columns: rows, "row 'LABEL'"
 # and the row's line); and a summary: N tables checked, M numbers, C sub-columns each held by one source
 # column, tables opted out, K unannotated tables with numbers (in a column that is not the first), which
-# --list names. Exit 1 on any mismatch, a column the rule rejects, a missing source or a numbers comment
-# that annotates no table; 0 otherwise.
+# --list names, and the tables whose sources name their machine; FILE:LINE: ... measured on NAME; the text
+# above it ... does not say so, and FILE:LINE: one table, two machines. Exit 1 on any mismatch, a column the
+# rule rejects, a machine unnamed or two, a missing source or a numbers comment that annotates no table; 0
+# otherwise.
 set -euo pipefail
 
 list=0
@@ -164,11 +172,28 @@ function tokenize(s,   n, i, j, c, p, pp, start, sign, d, e, tok, num, ntok, k) 
 
 function is_number(f) { return f ~ /^[-+]?([0-9]+[.]?[0-9]*|[.][0-9]+)([eE][-+]?[0-9]+)?$/ }
 
+# cpu_name(s): a processor's name as texts write it: "Intel(R) Xeon(R) Processor" is Intel Xeon, "AMD EPYC
+# 7B13 64-Core Processor" AMD EPYC 7B13 (trademarks, "Processor", "CPU" and what follows, core counts cut).
+function cpu_name(s) {
+    gsub(/[(](R|TM|r|tm)[)]/, "", s)
+    sub(/ CPU.*$/, "", s); sub(/ @.*$/, "", s)
+    gsub(/ [0-9]+-Core/, "", s); gsub(/ Processor/, "", s)
+    gsub(/[ \t]+/, " ", s); sub(/^ /, "", s); sub(/ $/, "", s)
+    return s
+}
+# add_cpu(path, name): a machine a source was measured on (a CSV's cpu column, a race spread's "Machine:").
+function add_cpu(path, name) {
+    name = cpu_name(name)
+    if (name == "" || (path, name) in HASCPU) return
+    HASCPU[path, name] = 1
+    CPULIST[path] = (CPULIST[path] == "" ? "" : CPULIST[path] "|") name
+}
+
 # load(path): read a source once: its numbers into VAL[path, 1..NVAL[path]], a CSV's rows into
 # CELL[path, row, column] with COLS[path, name] the column of each header name, and its source columns
 # (for the column rule) into SCV[id, 1..SCN[id]]: one per CSV column, one per number position of each
 # column of each table of a Markdown source; PCOLS[path] lists their ids.
-function load(path,   line, nf, f, i, row, ismd, hdr, n, tbl, ncell, cell, c, p, id, hcell, h) {
+function load(path,   line, nf, f, i, row, ismd, hdr, n, tbl, ncell, cell, c, p, id, hcell, h, m) {
     if (path in LOADED) return LOADED[path]
     if ((getline line < path) < 0) { LOADED[path] = 0; return 0 }
     close(path)
@@ -181,6 +206,7 @@ function load(path,   line, nf, f, i, row, ismd, hdr, n, tbl, ncell, cell, c, p,
     while ((getline line < path) > 0) {
         sub(/\r$/, "", line)
         if (ismd) {
+            if (line ~ /^Machine: /) { m = line; sub(/^Machine: /, "", m); sub(/,.*/, "", m); add_cpu(path, m) }
             if (line !~ /^[ \t]*[|]/) { hdr = 0; continue }
             if (line ~ /^[ \t]*[|][-:| \t]*$/) continue   # the |---| line, between a header and its rows
             if (!hdr) {   # a table's header row
@@ -212,6 +238,7 @@ function load(path,   line, nf, f, i, row, ismd, hdr, n, tbl, ncell, cell, c, p,
         if (row == 0) {
             for (i = 1; i <= nf; i++) {
                 COLS[path, f[i]] = i
+                if (f[i] == "cpu") CPUCOL[path] = i
                 CSVCOL[path, i] = new_column(path, "", 0)
                 SCNAME[CSVCOL[path, i]] = path " column '" f[i] "'"
             }
@@ -220,6 +247,7 @@ function load(path,   line, nf, f, i, row, ismd, hdr, n, tbl, ncell, cell, c, p,
             continue
         }
         row++
+        if (path in CPUCOL) add_cpu(path, f[CPUCOL[path]])
         for (i = 1; i <= nf; i++) {
             if (!is_number(f[i])) continue
             VAL[path, ++NVAL[path]] = f[i] + 0
@@ -453,6 +481,7 @@ function start_table(   s, i) {
             SRC[++NSRC] = P_SRC[s]
             SRCLIST = (s == 1 ? "" : SRCLIST " ") P_SRC[s]
         }
+        check_machine()
         for (i = 1; i <= P_NDER; i++) { DKIND[i] = P_DKIND[i]; DA[i] = P_DA[i]; DB[i] = P_DB[i] }
         NDER = P_NDER
         LABELS = P_LABELS
@@ -461,6 +490,24 @@ function start_table(   s, i) {
         NJOIN = P_NJOIN
     }
     PENDING = 0; P_NSRC = 0; P_NDER = 0; P_LABELS = 1; P_COLMODE = ""; P_NJOIN = 0
+}
+
+# check_machine(): one machine per table, named in the text. The sources that record their machine (a CPU
+# column, a spread's "Machine:" line) must name one processor between them, and the text from the table's
+# heading down to its header must name it as texts write it (Intel Xeon, AMD EPYC).
+function check_machine(   s, n, c, i, names, list, k) {
+    list = ""; k = 0
+    for (s = 1; s <= NSRC; s++) {
+        if (!(SRC[s] in CPULIST)) continue
+        n = split(CPULIST[SRC[s]], c, "|")
+        for (i = 1; i <= n; i++)
+            if (!(c[i] in names)) { names[c[i]] = 1; list = (k++ ? list " and " : "") c[i] }
+    }
+    if (k == 0) return
+    MACHINE_TABLES++
+    if (k > 1) { problem(F ":" P_LINE ": one table, two machines: its sources were measured on " list); return }
+    if (index(CONTEXT, list) == 0)
+        problem(F ":" TABLE_LINE ": the table's sources were measured on " list "; the text above it (from its heading) does not say so")
 }
 
 function end_table() {
@@ -589,7 +636,7 @@ function check_columns(   hdr, nh, gi, g, k, m, j, id, cnt, best, bestcnt, miss,
 FNR == 1 {
     if (NR > 1) { end_table(); drop_pending() }
     F = FILENAME
-    INFENCE = 0; INTABLE = 0; PREVPIPE = 0; PREV = ""
+    INFENCE = 0; INTABLE = 0; PREVPIPE = 0; PREV = ""; CONTEXT = ""
     PENDING = 0; P_NSRC = 0; P_NDER = 0; P_LABELS = 1; P_COLMODE = ""; P_NJOIN = 0
 }
 { sub(/\r$/, "") }
@@ -600,6 +647,8 @@ FNR == 1 {
     next
 }
 INFENCE { next }
+/^#/ { CONTEXT = "" }
+{ CONTEXT = CONTEXT "\n" $0 }
 INTABLE && /^[ \t]*[|]/ { body_row($0); next }
 INTABLE { end_table() }
 PREVPIPE && /^[ \t]*[|][ \t]*:?-+:?[ \t]*([|][ \t]*:?-+:?[ \t]*)*[|]?[ \t]*$/ { PREVPIPE = 0; start_table(); next }
@@ -613,8 +662,8 @@ END {
     end_table(); drop_pending()
     if (LIST)
         for (i = 1; i <= UNANNOTATED; i++) print "unannotated: " UNLIST[i]
-    printf "%d tables checked, %d numbers, %d sub-columns each held by one source column, %d table(s) opted out (columns: any), %d unannotated tables with numbers (listed with --list)\n",
-        TABLES, NUMBERS, SUBCOLUMNS, OPTOUTS, UNANNOTATED
+    printf "%d tables checked, %d numbers, %d sub-columns each held by one source column, %d table(s) opted out (columns: any), %d unannotated tables with numbers (listed with --list), %d tables whose sources name their machine, named in the text\n",
+        TABLES, NUMBERS, SUBCOLUMNS, OPTOUTS, UNANNOTATED, MACHINE_TABLES
     if (PROBLEMS) {
         printf "%d problem(s)\n", PROBLEMS
         exit 1
