@@ -16,6 +16,7 @@
 #include "strahl/ch11/steps.hpp"
 #include "strahl/ch11/triangles.hpp"
 #include "strahl/ch11/type_sorted.hpp"
+#include "strahl/flatten.hpp"
 #include "strahl/tree_query.hpp"
 
 namespace strahl::ch11 {
@@ -132,12 +133,12 @@ public:
     std::size_t memory_bytes() const override { return this->base_bytes() + (set_ ? set_->memory_bytes() : 0); }
 
     template <class Stats>
-    [[gnu::flatten]] hit closest(const ray& query, Stats& stats) const {
+    STRAHL_FLATTEN hit closest(const ray& query, Stats& stats) const {
         if (!set_) return hit{};
         return tree_closest(*set_, this->tree_.loose, query, stats, [&](ray& r, auto&& leaf) { walk(r, stats, leaf); });
     }
     template <class Stats>
-    [[gnu::flatten]] bool any(const ray& query, Stats& stats) const {
+    STRAHL_FLATTEN bool any(const ray& query, Stats& stats) const {
         if (!set_) return false;
         return tree_any(*set_, this->tree_.loose, query, stats, [&](ray& r, auto&& leaf) { walk(r, stats, leaf); });
     }
@@ -184,7 +185,7 @@ public:
     }
 
     template <class Stats>
-    [[gnu::flatten]] hit closest(const ray& query, Stats& stats) const {
+    STRAHL_FLATTEN hit closest(const ray& query, Stats& stats) const {
         return tree_closest_with(slot_set<sorted_accel>{*this}, loose_, query, stats, [&](ray& r, hit& best) {
             ch05::fast_traverse(tree_, r, stats, [&](std::uint32_t leaf, std::uint32_t) {
                 test_leaf(leaves_[leaf], r, stats, [&](std::uint32_t id, float t, float u, float v) {
@@ -196,7 +197,7 @@ public:
         });
     }
     template <class Stats>
-    [[gnu::flatten]] bool any(const ray& query, Stats& stats) const {
+    STRAHL_FLATTEN bool any(const ray& query, Stats& stats) const {
         return tree_any_with(slot_set<sorted_accel>{*this}, loose_, query, stats, [&](ray& r) {
             bool found = false;
             ch05::fast_traverse(tree_, r, stats, [&](std::uint32_t leaf, std::uint32_t) {
@@ -283,7 +284,7 @@ public:
     }
 
     template <class Stats>
-    [[gnu::flatten]] hit closest(const ray& query, Stats& stats) const {
+    STRAHL_FLATTEN hit closest(const ray& query, Stats& stats) const {
         return tree_closest_with(slot_set<triangle_accel>{*this}, loose_, query, stats, [&](ray& r, hit& best) {
             ch05::fast_traverse(this->tree_, r, stats, [&](std::uint32_t first, std::uint32_t count) {
                 for (std::uint32_t k = first; k < first + count; ++k) {
@@ -296,7 +297,7 @@ public:
         });
     }
     template <class Stats>
-    [[gnu::flatten]] bool any(const ray& query, Stats& stats) const {
+    STRAHL_FLATTEN bool any(const ray& query, Stats& stats) const {
         return tree_any_with(slot_set<triangle_accel>{*this}, loose_, query, stats, [&](ray& r) {
             bool found = false;
             ch05::fast_traverse(this->tree_, r, stats, [&](std::uint32_t first, std::uint32_t count) {

@@ -10,6 +10,7 @@
 #include "strahl/ch13/child_order.hpp"
 #include "strahl/ch13/quantized_node.hpp"
 #include "strahl/ch13/wide_bvh.hpp"
+#include "strahl/flatten.hpp"
 #include "strahl/simd.hpp"
 #include <bit>
 #include <cstddef>
@@ -283,7 +284,7 @@ void robust_walk(const wide_bvh<N, M, Node>& tree, ray& r, Stats& stats, Leaf&& 
 // Flattened: g++ called chapter 05's fast_slab::make and the slab's set-up out of line here, a third of the
 // time of a ray that misses the tree (perf, the bunny's primary rays).
 template <visit_order Order, int N, int M, class Node, class Stats, class Leaf>
-[[gnu::flatten]] void wide_traverse(const wide_bvh<N, M, Node>& tree, ray& r, Stats& stats, Leaf&& leaf) {
+STRAHL_FLATTEN void wide_traverse(const wide_bvh<N, M, Node>& tree, ray& r, Stats& stats, Leaf&& leaf) {
     if (tree.nodes.empty() && !is_leaf(tree.root_ref)) return;
     bool fast = false;
     const wide_fast_slab<N> s(r, tree.bounds, fast);
