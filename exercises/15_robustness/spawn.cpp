@@ -10,6 +10,8 @@ namespace strahl::ch15 {
 
 // Exercise 15.3: spawn.hpp gives the rule per axis. Hint: std::bit_cast<std::uint32_t>(x) gives x's bits;
 // do the integer arithmetic unsigned (it wraps, where signed overflow would be undefined).
+// Why: why move p by a number of ulps rather than by a fixed distance: how does the offset then grow with |p|, and
+// why does it fail below 1/32, where the rule adds 2^-16 n' instead?
 vec3 offset_integer(const vec3& p, const vec3& n, const vec3& w) {
     STRAHL_TODO("15.3 the spawn offset");
 }
