@@ -3,6 +3,7 @@
 // dynamic bounding volume hierarchies", ACM TOG 26(1), 2007, section 4 (the interval-arithmetic frustum);
 // R. Overbeck, R. Ramamoorthi and W. R. Mark, "Large ray packets for real-time Whitted ray tracing", IEEE RT
 // 2008, section 3 (the partition); chapter 05's slab_test.hpp (fast_slab, the test 12.1 puts on lanes).
+#include "strahl/inlining.hpp"
 #include "strahl/ch05/slab_test.hpp"
 #include "strahl/ch12/packet.hpp"
 #include "strahl/ch12/partition_walk.hpp"
@@ -18,8 +19,8 @@ namespace strahl::ch12 {
 // origin term (r.org_near or r.org_far), fused (simd::fmsub) exactly where ch05::fused_plane_default is true.
 // Why: why may a lane whose ray misses the box still be computed, and what keeps its answer from counting?
 template <bool Coherent, int K>
-[[gnu::always_inline]] inline simd::vmask<K> packet_box(const lane_rays<K>& r, const float* bmin, const float* bmax,
-                                                        int octant, simd::vfloat<K>& entry) {
+STRAHL_ALWAYS_INLINE inline simd::vmask<K> packet_box(const lane_rays<K>& r, const float* bmin, const float* bmax,
+                                                      int octant, simd::vfloat<K>& entry) {
     STRAHL_TODO("12.1 the packet's box test");
 }
 
@@ -41,7 +42,7 @@ bool frustum_misses(const ray_packet<K, V>& p, const float* bmin, const float* b
 // Hint: one pass, a swap per entering ray into the next place of the front part.
 // Why: why must the rays that miss stay in the list rather than be dropped?
 template <int K, class Enters>
-[[gnu::always_inline]] inline int partition_active(std::uint16_t* ids, int count, Enters&& enters) {
+STRAHL_ALWAYS_INLINE inline int partition_active(std::uint16_t* ids, int count, Enters&& enters) {
     STRAHL_TODO("12.3 the active-ray partition");
 }
 

@@ -2,6 +2,7 @@
 // packet's coherence (3 points) and 14.3 the hand-off (4 points). Read: C. Benthin, I. Wald, S. Woop,
 // M. Ernst and W. R. Mark, "Combining single and packet-ray tracing for arbitrary ray distributions on the
 // Intel MIC architecture", IEEE TVCG 18(9), 2012, sections 4 and 5; chapter 05's slab_test.hpp.
+#include "strahl/inlining.hpp"
 #include "strahl/ch14/hybrid_walk.hpp"
 #include "strahl/todo.hpp"
 
@@ -13,8 +14,8 @@ namespace strahl::ch14 {
 // keep its operand order, or a NaN plane decides differently from the scalar test.
 // Why can one function serve chapter 12 and chapter 13? Write down what lane k holds in each.
 template <int L>
-[[gnu::always_inline]] inline simd::vmask<L> lane_slab(const simd::vfloat<L> (&near)[3], const simd::vfloat<L> (&far)[3],
-                                                       const simd::vfloat<L> (&inv)[3],
+STRAHL_ALWAYS_INLINE inline simd::vmask<L> lane_slab(const simd::vfloat<L> (&near)[3], const simd::vfloat<L> (&far)[3],
+                                                     const simd::vfloat<L> (&inv)[3],
                                                        const simd::vfloat<L> (&org_near)[3],
                                                        const simd::vfloat<L> (&org_far)[3], simd::vfloat<L> t0,
                                                        simd::vfloat<L> t1, simd::vfloat<L>& entry) {
@@ -41,7 +42,7 @@ int packet_threshold(const coherence& c, int lanes, const threshold_rule& rule) 
 // Hint: the packet goes on after the hand-off, testing boxes against [t0, t1]: what must t1 become?
 // Why does a closest-hit ray stay active in the packet after it went alone, and an any-hit ray not always?
 template <bool Any, int K, class Alone>
-[[gnu::always_inline]] inline void hand_off(ch12::ray_packet<K, 1>& p, unsigned lanes, Alone&& alone) {
+STRAHL_ALWAYS_INLINE inline void hand_off(ch12::ray_packet<K, 1>& p, unsigned lanes, Alone&& alone) {
     STRAHL_TODO("14.3 the hand-off");
 }
 

@@ -3,6 +3,7 @@
 // dynamic bounding volume hierarchies", ACM TOG 26(1), 2007, section 4 (the interval-arithmetic frustum);
 // R. Overbeck, R. Ramamoorthi and W. R. Mark, "Large ray packets for real-time Whitted ray tracing", IEEE RT
 // 2008, section 3 (the partition); chapter 05's slab_test.hpp (fast_slab, the test 12.1 puts on lanes).
+#include "strahl/inlining.hpp"
 #include "strahl/ch05/slab_test.hpp"
 #include "strahl/ch12/packet.hpp"
 #include "strahl/ch12/partition_walk.hpp"
@@ -13,8 +14,8 @@ namespace strahl::ch12 {
 // sign bits otherwise), their t as ch05::plane_t computes it, the running maximum of the entries and minimum
 // of the exits, as fast_slab::entry does.
 template <bool Coherent, int K>
-[[gnu::always_inline]] inline simd::vmask<K> packet_box(const lane_rays<K>& r, const float* bmin, const float* bmax,
-                                                        int octant, simd::vfloat<K>& entry) {
+STRAHL_ALWAYS_INLINE inline simd::vmask<K> packet_box(const lane_rays<K>& r, const float* bmin, const float* bmax,
+                                                      int octant, simd::vfloat<K>& entry) {
     using vf = simd::vfloat<K>;
     vf lo = r.t0, hi = r.t1;
     for (int a = 0; a < 3; ++a) {
@@ -60,7 +61,7 @@ bool frustum_misses(const ray_packet<K, V>& p, const float* bmin, const float* b
 // 12.3: K rays a call (enters(at): bits for ids[at .. at + K - 1]); each ray that enters is swapped to the
 // next place of the front part. A swap only touches places already tested: the next call's rays are intact.
 template <int K, class Enters>
-[[gnu::always_inline]] inline int partition_active(std::uint16_t* ids, int count, Enters&& enters) {
+STRAHL_ALWAYS_INLINE inline int partition_active(std::uint16_t* ids, int count, Enters&& enters) {
     int front = 0;
     for (int at = 0; at < count; at += K) {
         unsigned bits = enters(at);

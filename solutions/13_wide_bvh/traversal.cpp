@@ -1,6 +1,7 @@
 // Exercises 13.2 the node test (3 points) and 13.3 the ordered push (5 points). Read: I. Wald, C. Benthin and
 // S. Boulos, "Getting rid of packets", IEEE RT 2008, section 4; chapter 05's slab_test.hpp (the fast test
 // this one widens to N boxes).
+#include "strahl/inlining.hpp"
 #include "strahl/ch13/wide_traverse.hpp"
 
 namespace strahl::ch13 {
@@ -8,8 +9,8 @@ namespace strahl::ch13 {
 // 13.2: per axis, the near and the far plane of all N boxes (one row each, s.row(n, s.near_row[a])), their t
 // by s.plane_t, and the running maximum of the entries and minimum of the exits, as the scalar test does.
 template <int N, bool Fused>
-[[gnu::always_inline]] inline simd::vfloat<N> node_entry(const wide_node<N>& n, const wide_fast_slab<N, Fused>& s,
-                                                  float t0, float t1, simd::vmask<N>& hit) {
+STRAHL_ALWAYS_INLINE inline simd::vfloat<N> node_entry(const wide_node<N>& n, const wide_fast_slab<N, Fused>& s,
+                                                float t0, float t1, simd::vmask<N>& hit) {
     using vf = simd::vfloat<N>;
     vf lo(t0), hi(t1);
     for (int a = 0; a < 3; ++a) {
@@ -25,8 +26,8 @@ template <int N, bool Fused>
 // 13.3: the hit children sorted by entry distance, farthest first (an insertion sort: two to N entries),
 // pushed but for the last, the nearest, whose reference is returned.
 template <int N>
-[[gnu::always_inline]] inline std::uint32_t push_ordered(unsigned bits, const float* t, const std::uint32_t* child,
-                                                  stack_entry* stack, int& top) {
+STRAHL_ALWAYS_INLINE inline std::uint32_t push_ordered(unsigned bits, const float* t, const std::uint32_t* child,
+                                                stack_entry* stack, int& top) {
     stack_entry hits[N];
     int count = 0;
     for (; bits != 0; bits &= bits - 1) {

@@ -2,14 +2,15 @@
 // packet's coherence (3 points) and 14.3 the hand-off (4 points). Read: C. Benthin, I. Wald, S. Woop,
 // M. Ernst and W. R. Mark, "Combining single and packet-ray tracing for arbitrary ray distributions on the
 // Intel MIC architecture", IEEE TVCG 18(9), 2012, sections 4 and 5; chapter 05's slab_test.hpp.
+#include "strahl/inlining.hpp"
 #include "strahl/ch14/hybrid_walk.hpp"
 
 namespace strahl::ch14 {
 
 // 14.1: chapter 05's fast test on L lanes, whatever the lanes hold.
 template <int L>
-[[gnu::always_inline]] inline simd::vmask<L> lane_slab(const simd::vfloat<L> (&near)[3], const simd::vfloat<L> (&far)[3],
-                                                       const simd::vfloat<L> (&inv)[3],
+STRAHL_ALWAYS_INLINE inline simd::vmask<L> lane_slab(const simd::vfloat<L> (&near)[3], const simd::vfloat<L> (&far)[3],
+                                                     const simd::vfloat<L> (&inv)[3],
                                                        const simd::vfloat<L> (&org_near)[3],
                                                        const simd::vfloat<L> (&org_far)[3], simd::vfloat<L> t0,
                                                        simd::vfloat<L> t1, simd::vfloat<L>& entry) {
@@ -58,7 +59,7 @@ int packet_threshold(const coherence& c, int lanes, const threshold_rule& rule) 
 
 // 14.3: out of the packet, traced alone, the answer back into the lane.
 template <bool Any, int K, class Alone>
-[[gnu::always_inline]] inline void hand_off(ch12::ray_packet<K, 1>& p, unsigned lanes, Alone&& alone) {
+STRAHL_ALWAYS_INLINE inline void hand_off(ch12::ray_packet<K, 1>& p, unsigned lanes, Alone&& alone) {
     for (; lanes != 0; lanes &= lanes - 1) {
         const int k = std::countr_zero(lanes);
         lone_ray l;

@@ -13,6 +13,7 @@
 //   T. Ize, "Robust BVH ray traversal", Journal of Computer Graphics Techniques 2(2), 2013 (the widening, and
 //   why the multiply-subtract form needs more care).
 #pragma once
+#include "strahl/inlining.hpp"
 #include "strahl/ch04/traverse.hpp"
 #include <cmath>
 #include <optional>
@@ -50,7 +51,7 @@ struct robust_slab : plane_choice {
     // The entry distance of node n's box for t in [t0, t1], or +inf when the ray misses it. Where the origin
     // lies on a plane and the direction component is +-0, that plane's t is NaN (0 * inf); the comparisons are
     // written so that a NaN never wins (the ray runs in the plane: no constraint).
-    [[gnu::always_inline]] float entry(const ch04::bvh_node& n, float t0, float t1) const {
+    STRAHL_ALWAYS_INLINE float entry(const ch04::bvh_node& n, float t0, float t1) const {
         const float* planes = n.bmin;
         for (int a = 0; a < 3; ++a) {
             const float near = (planes[near_plane[a]] - org_near[a]) * inv_dir[a];
@@ -89,7 +90,7 @@ inline constexpr bool fused_plane_default = false;
 
 // A plane's t in the fast test: plane * inv_dir - org_term, fused or not.
 template <bool Fused>
-[[gnu::always_inline]] inline float plane_t(float plane, float inv_dir, float org_term) {
+STRAHL_ALWAYS_INLINE inline float plane_t(float plane, float inv_dir, float org_term) {
     if constexpr (Fused) return std::fma(plane, inv_dir, -org_term);
     else return plane * inv_dir - org_term;
 }
@@ -122,7 +123,7 @@ struct fast_slab : plane_choice {
     // instantiated in the race's registry.cpp) it called this one out of line, and Sponza's primary rays ran
     // 29% slower (1.10 against 1.54 Mrays/s in the same session). Fused: see plane_t (the tests run both).
     template <bool Fused = fused_plane_default>
-    [[gnu::always_inline]] float entry(const ch04::bvh_node& n, float t0, float t1) const {
+    STRAHL_ALWAYS_INLINE float entry(const ch04::bvh_node& n, float t0, float t1) const {
         const float* planes = n.bmin;
         for (int a = 0; a < 3; ++a) {
             const float near = plane_t<Fused>(planes[near_plane[a]], inv_dir[a], org_near[a]);

@@ -16,7 +16,7 @@
 #include "strahl/ch11/steps.hpp"
 #include "strahl/ch11/triangles.hpp"
 #include "strahl/ch11/type_sorted.hpp"
-#include "strahl/flatten.hpp"
+#include "strahl/inlining.hpp"
 #include "strahl/tree_query.hpp"
 
 namespace strahl::ch11 {

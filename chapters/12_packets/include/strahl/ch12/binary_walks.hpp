@@ -13,6 +13,7 @@
 // of `lanes` (lane j is the packet's ray at(j)), the leaf's primitives first .. first + count - 1 of the
 // tree's prim_ids. Any-hit leaves clear the lanes they answer from the packet's active bits.
 #pragma once
+#include "strahl/inlining.hpp"
 #include "strahl/ch04/bvh.hpp"
 #include "strahl/ch12/packet.hpp"
 #include <bit>
@@ -22,7 +23,7 @@ namespace strahl::ch12 {
 // Counts, for each vector tested at a node, the lanes that enter it (the SIMD work that was useful), where
 // Stats can take them (lane_counting, the chapter's program and the tests), nothing otherwise.
 template <class Stats>
-[[gnu::always_inline]] inline void count_lanes(Stats& stats, int active, int width) {
+STRAHL_ALWAYS_INLINE inline void count_lanes(Stats& stats, int active, int width) {
     if constexpr (requires { stats.lanes(active, width); }) stats.lanes(active, width);
 }
 

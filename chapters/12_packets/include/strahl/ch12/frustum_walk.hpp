@@ -10,6 +10,7 @@
 //   I. Wald et al., "Embree: a kernel framework for efficient CPU ray tracing", ACM TOG 33(4), 2014.
 // Only for coherent packets (every ray in one octant): the frustum needs one near plane per axis.
 #pragma once
+#include "strahl/inlining.hpp"
 #include "strahl/ch04/bvh.hpp"
 #include "strahl/ch05/slab_test.hpp"
 #include "strahl/ch12/binary_walks.hpp"
@@ -27,8 +28,8 @@ namespace strahl::ch12 {
 // below the smallest exit bound (and t1_lo, their smallest t1), each lane's own test would say it enters.
 // `covered` receives those children (a subset of the candidates).
 template <bool Cover = false, int N, int K, int V>
-[[gnu::always_inline]] inline unsigned frustum_children(const ray_packet<K, V>& p, const ch13::wide_node<N>& n,
-                                                        simd::vfloat<N>& entry, float t0_hi = 0.0f,
+STRAHL_ALWAYS_INLINE inline unsigned frustum_children(const ray_packet<K, V>& p, const ch13::wide_node<N>& n,
+                                                      simd::vfloat<N>& entry, float t0_hi = 0.0f,
                                                         float t1_lo = 0.0f, unsigned* covered = nullptr) {
     using vf = simd::vfloat<N>;
     vf lo(p.t0_lo), hi(p.t1_hi), all_lo(t0_hi), all_hi(t1_lo);

@@ -7,6 +7,7 @@
 //   I. Wald, S. Boulos and P. Shirley, "Ray tracing deformable scenes using dynamic bounding volume
 //   hierarchies", ACM TOG 26(1), 2007 (large packets, the first active ray, the interval-arithmetic frustum).
 #pragma once
+#include "strahl/inlining.hpp"
 #include "strahl/aabb.hpp"
 #include "strahl/ray.hpp"
 #include "strahl/simd.hpp"
@@ -252,7 +253,7 @@ struct lane_rays {
 };
 
 template <int K, int V>
-[[gnu::always_inline]] inline lane_rays<K> load(const ray_packet<K, V>& p, int v) {
+STRAHL_ALWAYS_INLINE inline lane_rays<K> load(const ray_packet<K, V>& p, int v) {
     using P = ray_packet<K, V>;
     lane_rays<K> r;
     for (int a = 0; a < 3; ++a) {
@@ -267,14 +268,14 @@ template <int K, int V>
 // After hits (or rays traced alone) shrank some lanes' reach: tmax and t1 of vector v again, the rest of r
 // unchanged (cheaper than load, and no copy of the whole set).
 template <int K, int V>
-[[gnu::always_inline]] inline void reload_reach(lane_rays<K>& r, const ray_packet<K, V>& p, int v) {
+STRAHL_ALWAYS_INLINE inline void reload_reach(lane_rays<K>& r, const ray_packet<K, V>& p, int v) {
     using P = ray_packet<K, V>;
     r.tmax = P::get(p.tmax, v), r.t1 = P::get(p.t1, v);
 }
 
 // Lanes 0..n-1 from the packet's rays ids[0..n-1]; lanes n..K-1 repeat ids[0] (their answers are ignored).
 template <int K, int V>
-[[gnu::always_inline]] inline lane_rays<K> gather(const ray_packet<K, V>& p, const std::uint16_t* ids, int n) {
+STRAHL_ALWAYS_INLINE inline lane_rays<K> gather(const ray_packet<K, V>& p, const std::uint16_t* ids, int n) {
     using vf = simd::vfloat<K>;
     alignas(64) float f[21][K];
     for (int j = 0; j < K; ++j) {
@@ -316,8 +317,8 @@ bool frustum_misses(const ray_packet<K, V>& p, const float* bmin, const float* b
 // computes, operation for operation (chapter 13's block test with the roles of rays and triangles swapped),
 // so its t, u and v are the scalar test's bits. Returns the lanes that hit with t in (tmin, tmax).
 template <int K>
-[[gnu::always_inline]] inline unsigned packet_triangle(const lane_rays<K>& r, const float* v0, const float* e1,
-                                                       const float* e2, simd::vfloat<K>& t, simd::vfloat<K>& u,
+STRAHL_ALWAYS_INLINE inline unsigned packet_triangle(const lane_rays<K>& r, const float* v0, const float* e1,
+                                                     const float* e2, simd::vfloat<K>& t, simd::vfloat<K>& u,
                                                        simd::vfloat<K>& w) {
     using vf = simd::vfloat<K>;
     const vf e1x(e1[0]), e1y(e1[1]), e1z(e1[2]), e2x(e2[0]), e2y(e2[1]), e2z(e2[2]);
@@ -343,7 +344,7 @@ template <int K>
 }
 
 // std::nextafter(x, inf) for x neither NaN nor +inf, without the library call: the next float up.
-[[gnu::always_inline]] inline float next_up(float x) {
+STRAHL_ALWAYS_INLINE inline float next_up(float x) {
     if (x == 0.0f) return std::numeric_limits<float>::denorm_min();
     const std::uint32_t b = std::bit_cast<std::uint32_t>(x);
     return std::bit_cast<float>(b >> 31 ? b - 1 : b + 1);
@@ -353,8 +354,8 @@ template <int K>
 // id at equal t; the winner's tmax becomes the next float above t (and t1 with it).
 // Lane j is the packet's ray at(j): v * K + j for a loaded vector, ids[j] for a gathered one.
 template <int K, int V, class At>
-[[gnu::always_inline]] inline void packet_record(ray_packet<K, V>& p, unsigned bits, At at, std::uint32_t id,
-                                                 simd::vfloat<K> t, simd::vfloat<K> u, simd::vfloat<K> w) {
+STRAHL_ALWAYS_INLINE inline void packet_record(ray_packet<K, V>& p, unsigned bits, At at, std::uint32_t id,
+                                               simd::vfloat<K> t, simd::vfloat<K> u, simd::vfloat<K> w) {
     alignas(64) float ts[K], us[K], ws[K];
     t.store(ts), u.store(us), w.store(ws);
     for (; bits != 0; bits &= bits - 1) {
@@ -370,8 +371,8 @@ template <int K, int V, class At>
 // over the lanes that hit. The ids compare as signed int32: at equal t the lane holds a hit (t < inf), whose
 // id, as every triangle's, is below 2^31.
 template <int K, int V>
-[[gnu::always_inline]] inline void packet_record_lanes(ray_packet<K, V>& p, int v, simd::vmask<K> win,
-                                                       std::uint32_t id, simd::vfloat<K> t, simd::vfloat<K> u,
+STRAHL_ALWAYS_INLINE inline void packet_record_lanes(ray_packet<K, V>& p, int v, simd::vmask<K> win,
+                                                     std::uint32_t id, simd::vfloat<K> t, simd::vfloat<K> u,
                                                        simd::vfloat<K> w) {
     using vf = simd::vfloat<K>;
     using vi = simd::vint<K>;

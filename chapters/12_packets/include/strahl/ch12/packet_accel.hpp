@@ -9,6 +9,7 @@
 // (exercises 12.1 to 12.3, packet_accel_impl.hpp); chapter 14's hybrid, a Policy that changes the wide
 // walk's box test and adds the switch to single rays, at the end of its own exercise file.
 #pragma once
+#include "strahl/inlining.hpp"
 #include "strahl/ch01/primitive_sets.hpp"
 #include "strahl/ch05/fast_traverse.hpp"
 #include "strahl/ch05/sah.hpp"
@@ -256,8 +257,8 @@ private:
     // The leaf test on a packet's lanes: closest hit records (chapter 01's rule, per lane); any hit marks
     // the lane answered and takes it out of the packet.
     template <bool Any, class Stats>
-    [[gnu::always_inline]] bool test_triangle(ray_packet<K, V>& p, const lane_rays<K>& r, unsigned& lanes, auto at,
-                                              const float* v0, const float* e1, const float* e2, std::uint32_t id,
+    STRAHL_ALWAYS_INLINE bool test_triangle(ray_packet<K, V>& p, const lane_rays<K>& r, unsigned& lanes, auto at,
+                                            const float* v0, const float* e1, const float* e2, std::uint32_t id,
                                               Stats& stats) const {
         stats.prim_test(std::popcount(lanes));
         simd::vfloat<K> t, u, w;
@@ -280,8 +281,8 @@ private:
 
     // The triangles of a wide leaf (blocks of 4) against the lanes of one vector; whether any lane hit.
     template <bool Any, class Stats>
-    [[gnu::always_inline]] bool wide_leaf(ray_packet<K, V>& p, const lane_rays<K>& r, unsigned lanes, auto at,
-                                          std::uint32_t ref, Stats& stats) const {
+    STRAHL_ALWAYS_INLINE bool wide_leaf(ray_packet<K, V>& p, const lane_rays<K>& r, unsigned lanes, auto at,
+                                        std::uint32_t ref, Stats& stats) const {
         bool any = false;
         const ch13::triangle_block<wide_block>* b = &wide_.blocks[ch13::leaf_first(ref)];
         for (std::uint32_t k = ch13::leaf_blocks(ref); k-- > 0 && lanes != 0; ++b)

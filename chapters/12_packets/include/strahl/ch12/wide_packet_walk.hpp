@@ -7,6 +7,7 @@
 //   I. Wald, S. Woop, C. Benthin, G. S. Johnson and M. Ernst, "Embree: a kernel framework for efficient CPU
 //   ray tracing", ACM TOG 33(4), 2014 (packets through wide nodes, section 5).
 #pragma once
+#include "strahl/inlining.hpp"
 #include "strahl/ch04/bvh.hpp"
 #include "strahl/ch12/binary_walks.hpp"
 #include "strahl/ch12/frustum_walk.hpp"
@@ -26,8 +27,8 @@ namespace strahl::ch12 {
 template <bool Coherent>
 struct packet_hooks {
     template <int K>
-    [[gnu::always_inline]] simd::vmask<K> box(const lane_rays<K>& r, const float* bmin, const float* bmax, int octant,
-                                              simd::vfloat<K>& entry) const {
+    STRAHL_ALWAYS_INLINE simd::vmask<K> box(const lane_rays<K>& r, const float* bmin, const float* bmax, int octant,
+                                            simd::vfloat<K>& entry) const {
         return packet_box<Coherent>(r, bmin, bmax, octant, entry);
     }
     static constexpr bool leave(unsigned, std::uint32_t) { return false; }

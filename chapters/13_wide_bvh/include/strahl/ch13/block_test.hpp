@@ -9,6 +9,7 @@
 // triangle intersection", JCGT 2013), step for step as exercise 15.2 writes it, so that its lanes equal
 // brute force with that test bit for bit.
 #pragma once
+#include "strahl/inlining.hpp"
 #include "strahl/ch13/wide_bvh.hpp"
 #include "strahl/ray.hpp"
 #include "strahl/simd.hpp"
@@ -29,8 +30,8 @@ struct ray_lanes {
 
 // Which lanes of block b the ray hits with t in (tmin, tmax); their t, u, v.
 template <int M>
-[[gnu::always_inline]] inline simd::vmask<M> intersect_block(const triangle_block<M>& b, const ray_lanes<M>& r,
-                                                             float tmin, float tmax, simd::vfloat<M>& t,
+STRAHL_ALWAYS_INLINE inline simd::vmask<M> intersect_block(const triangle_block<M>& b, const ray_lanes<M>& r,
+                                                           float tmin, float tmax, simd::vfloat<M>& t,
                                                              simd::vfloat<M>& u, simd::vfloat<M>& v) {
     using vf = simd::vfloat<M>;
     const vf e1x = vf::load(b.e1[0]), e1y = vf::load(b.e1[1]), e1z = vf::load(b.e1[2]);
@@ -83,8 +84,8 @@ struct shear_lanes {
 
 // Which lanes of block b the ray hits with t in (tmin, tmax); their t, u, v. Steps a to e of exercise 15.2.
 template <int M>
-[[gnu::always_inline]] inline simd::vmask<M> intersect_block_watertight(const vertex_block<M>& b,
-                                                                        const shear_lanes<M>& s, float tmin,
+STRAHL_ALWAYS_INLINE inline simd::vmask<M> intersect_block_watertight(const vertex_block<M>& b,
+                                                                      const shear_lanes<M>& s, float tmin,
                                                                         float tmax, simd::vfloat<M>& t,
                                                                         simd::vfloat<M>& u, simd::vfloat<M>& v) {
     using vf = simd::vfloat<M>;

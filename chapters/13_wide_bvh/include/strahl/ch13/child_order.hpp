@@ -17,6 +17,7 @@
 //   J. D. MacDonald and K. S. Booth, "Heuristics for ray tracing using space subdivision", The Visual
 //   Computer 6(3), 1990 (surface area as the chance that a ray entering a box enters a child).
 #pragma once
+#include "strahl/inlining.hpp"
 #include "strahl/ch13/wide_bvh.hpp"
 #include <algorithm>
 
@@ -85,7 +86,7 @@ void order_by_octant(wide_bvh<8, M>& tree) {
 // The bits of `slots` (a node's children by slot) moved to rank positions: bit j set where the j-th child
 // of n.order is in `slots`. The walks visit the result's bits in order, child n.order[j] for bit j.
 template <class Node>
-[[gnu::always_inline]] inline unsigned ranked_bits(const Node& n, unsigned slots) {
+STRAHL_ALWAYS_INLINE inline unsigned ranked_bits(const Node& n, unsigned slots) {
     constexpr int N = sizeof(n.order);
     unsigned ranked = 0;
     for (int j = 0; j < N; ++j) ranked |= ((slots >> n.order[j]) & 1u) << j;

@@ -15,6 +15,7 @@
 // with the tree's bounds grown to hold every decoded box. Only the hit set changes (more boxes entered);
 // the leaves' triangle tests, and so every answer, stay the same.
 #pragma once
+#include "strahl/inlining.hpp"
 #include "strahl/ch13/wide_bvh.hpp"
 #include "strahl/simd.hpp"
 #include <cstdint>
@@ -36,7 +37,7 @@ struct alignas(64) qnode {
 
     bool used(int k) const { return (used_bits >> k) & 1u; }
     // Plane row r (0-2: minima, 3-5: maxima) of every child, decoded.
-    [[gnu::always_inline]] simd::vfloat<N> row(int r) const {
+    STRAHL_ALWAYS_INLINE simd::vfloat<N> row(int r) const {
         const int a = r % 3;
         return simd::bytes_to_float<N>(q[r]) * simd::vfloat<N>(step[a]) + simd::vfloat<N>(origin[a]);
     }
@@ -46,7 +47,7 @@ struct alignas(64) qnode {
         return {vec3(plane(0, k), plane(1, k), plane(2, k)), vec3(plane(3, k), plane(4, k), plane(5, k))};
     }
     // The planes of all N children into a float node's rows (its children and order are not written).
-    [[gnu::always_inline]] void decode(wide_node<N>& out) const {
+    STRAHL_ALWAYS_INLINE void decode(wide_node<N>& out) const {
         for (int a = 0; a < 3; ++a) row(a).store(out.lo[a]), row(3 + a).store(out.hi[a]);
     }
 };
@@ -54,17 +55,17 @@ struct alignas(64) qnode {
 // The walks read a node's planes as a float node's rows: a float node as it is, a quantised one decoded into
 // `scratch` (the slab tests are written once, for float rows).
 template <int N>
-[[gnu::always_inline]] inline const wide_node<N>& planes_of(const wide_node<N>& n, wide_node<N>&) { return n; }
+STRAHL_ALWAYS_INLINE inline const wide_node<N>& planes_of(const wide_node<N>& n, wide_node<N>&) { return n; }
 template <int N>
-[[gnu::always_inline]] inline const wide_node<N>& planes_of(const qnode<N>& n, wide_node<N>& scratch) {
+STRAHL_ALWAYS_INLINE inline const wide_node<N>& planes_of(const qnode<N>& n, wide_node<N>& scratch) {
     n.decode(scratch);
     return scratch;
 }
 // The slots that hold children: all of a float node's (an empty slot's box is empty), a quantised node's bits.
 template <int N>
-[[gnu::always_inline]] inline unsigned used_slots(const wide_node<N>&) { return (1u << N) - 1; }
+STRAHL_ALWAYS_INLINE inline unsigned used_slots(const wide_node<N>&) { return (1u << N) - 1; }
 template <int N>
-[[gnu::always_inline]] inline unsigned used_slots(const qnode<N>& n) { return n.used_bits; }
+STRAHL_ALWAYS_INLINE inline unsigned used_slots(const qnode<N>& n) { return n.used_bits; }
 
 // The tree with its nodes quantised: the same references, blocks and loose triangles; bounds grown to hold
 // every decoded box (and centre and diagonal from them). Throws std::logic_error if a decoded plane would

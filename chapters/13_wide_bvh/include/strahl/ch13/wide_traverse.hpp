@@ -10,7 +10,7 @@
 #include "strahl/ch13/child_order.hpp"
 #include "strahl/ch13/quantized_node.hpp"
 #include "strahl/ch13/wide_bvh.hpp"
-#include "strahl/flatten.hpp"
+#include "strahl/inlining.hpp"
 #include "strahl/simd.hpp"
 #include <bit>
 #include <cstddef>
@@ -21,7 +21,7 @@ namespace strahl::ch13 {
 // the distances, |d| >= max(|dx|, |dy|, |dz|) for the direction, and the tree's diagonal (precomputed in
 // wide_bvh::diagonal) in place of its own. A larger slack only widens the box tests: never a box lost.
 template <int N, int M, class Node>
-[[gnu::always_inline]] inline float wide_ray_slack(const ray& r, const wide_bvh<N, M, Node>& tree) {
+STRAHL_ALWAYS_INLINE inline float wide_ray_slack(const ray& r, const wide_bvh<N, M, Node>& tree) {
     const vec3 to = r.org - tree.centre;
     const float reach = (std::fabs(to.x) + std::fabs(to.y) + std::fabs(to.z)) + tree.diagonal;
     const float len = std::max(std::fabs(r.dir.x), std::max(std::fabs(r.dir.y), std::fabs(r.dir.z)));
@@ -78,13 +78,13 @@ struct wide_fast_slab : plane_rows<N> {
         }
     }
     // A plane's t: plane * inv_dir - org_term, in one fused multiply-add or a multiply and a subtract.
-    [[gnu::always_inline]] static vf plane_t(vf plane, vf inv_dir, vf org_term) {
+    STRAHL_ALWAYS_INLINE static vf plane_t(vf plane, vf inv_dir, vf org_term) {
         if constexpr (Fused) return simd::fmsub(plane, inv_dir, org_term);
         else return plane * inv_dir - org_term;
     }
     vf entry(const wide_node<N>& n, float t0, float t1, simd::vmask<N>& hit) const;
     // The same on a quantised node, each row decoded where it is read.
-    [[gnu::always_inline]] vf entry(const qnode<N>& n, float t0, float t1, simd::vmask<N>& hit) const {
+    STRAHL_ALWAYS_INLINE vf entry(const qnode<N>& n, float t0, float t1, simd::vmask<N>& hit) const {
         vf lo(t0), hi(t1);
         for (int a = 0; a < 3; ++a) {
             const vf near = plane_t(n.row(this->near_q[a]), inv[a], org_near[a]);
@@ -105,8 +105,8 @@ simd::vfloat<N> node_entry(const wide_node<N>& n, const wide_fast_slab<N, Fused>
                            simd::vmask<N>& hit);
 
 template <int N, bool Fused>
-[[gnu::always_inline]] inline simd::vfloat<N> wide_fast_slab<N, Fused>::entry(const wide_node<N>& n, float t0,
-                                                                             float t1, simd::vmask<N>& hit) const {
+STRAHL_ALWAYS_INLINE inline simd::vfloat<N> wide_fast_slab<N, Fused>::entry(const wide_node<N>& n, float t0,
+                                                                           float t1, simd::vmask<N>& hit) const {
     return node_entry(n, *this, t0, t1, hit);
 }
 
@@ -145,7 +145,7 @@ struct wide_robust_slab : plane_rows<N> {
             org_near[a] = vf(r.org[a] + toward), org_far[a] = vf(r.org[a] - toward), inv[a] = vf(1.0f / r.dir[a]);
         }
     }
-    [[gnu::always_inline]] vf entry(const wide_node<N>& n, float t0, float t1, simd::vmask<N>& hit) const {
+    STRAHL_ALWAYS_INLINE vf entry(const wide_node<N>& n, float t0, float t1, simd::vmask<N>& hit) const {
         vf lo(t0), hi(t1);
         for (int a = 0; a < 3; ++a) {
             const vf near = (vf::load(this->row(n, this->near_row[a])) - org_near[a]) * inv[a];
@@ -180,8 +180,8 @@ enum class visit_order {
 // Exercise 13.3's push, as the walk calls it.
 template <int N>
 struct ordered_push {
-    [[gnu::always_inline]] std::uint32_t operator()(unsigned bits, const float* t, const std::uint32_t* child,
-                                                    stack_entry* stack, int& top) const {
+    STRAHL_ALWAYS_INLINE std::uint32_t operator()(unsigned bits, const float* t, const std::uint32_t* child,
+                                                  stack_entry* stack, int& top) const {
         return push_ordered<N>(bits, t, child, stack, top);
     }
 };

@@ -10,6 +10,7 @@
 //   I. Wald, S. Woop, C. Benthin, G. S. Johnson and M. Ernst, "Embree: a kernel framework for efficient CPU
 //   ray tracing", ACM TOG 33(4), 2014 (the hybrid intersectors, section 5.3).
 #pragma once
+#include "strahl/inlining.hpp"
 #include "strahl/ch01/primitive_sets.hpp"
 #include "strahl/ch12/packet.hpp"
 #include "strahl/ch13/block_test.hpp"
@@ -51,8 +52,8 @@ void hand_off(ch12::ray_packet<K, 1>& p, unsigned lanes, Alone&& alone);
 // 13.3's contract).
 template <int N>
 struct nearest_push {
-    [[gnu::always_inline]] std::uint32_t operator()(unsigned bits, const float* t, const std::uint32_t* child,
-                                                    ch13::stack_entry* stack, int& top) const {
+    STRAHL_ALWAYS_INLINE std::uint32_t operator()(unsigned bits, const float* t, const std::uint32_t* child,
+                                                  ch13::stack_entry* stack, int& top) const {
         ch13::stack_entry hits[N];
         int count = 0;
         for (; bits != 0; bits &= bits - 1) {
@@ -77,8 +78,8 @@ struct hybrid_hooks {
     bool ranked = false;  // any hit: rays without end visit children in the node's order (child_order.hpp)
     bool octant = false;  // closest hit: children in the node's order for the ray's octant (child_order.hpp)
 
-    [[gnu::always_inline]] simd::vmask<K> box(const ch12::lane_rays<K>& r, const float* bmin, const float* bmax,
-                                              int octant, simd::vfloat<K>& entry) const {
+    STRAHL_ALWAYS_INLINE simd::vmask<K> box(const ch12::lane_rays<K>& r, const float* bmin, const float* bmax,
+                                            int octant, simd::vfloat<K>& entry) const {
         return rays_box<Coherent>(r, bmin, bmax, octant, entry);
     }
 

@@ -8,6 +8,7 @@
 //   I. Wald, P. Slusallek, C. Benthin and M. Wagner, "Interactive rendering with coherent ray tracing",
 //   Eurographics 2001 (lanes are rays).
 #pragma once
+#include "strahl/inlining.hpp"
 #include "strahl/ch05/slab_test.hpp"
 #include "strahl/ch12/packet.hpp"
 #include "strahl/ch13/wide_traverse.hpp"
@@ -30,8 +31,8 @@ simd::vmask<L> lane_slab(const simd::vfloat<L> (&near)[3], const simd::vfloat<L>
 // coherent packet (every lane in the octant `octant`) chooses each axis's near and far plane once; the others
 // per lane, by the lanes' sign bits.
 template <bool Coherent, int K>
-[[gnu::always_inline]] inline simd::vmask<K> rays_box(const ch12::lane_rays<K>& r, const float* bmin,
-                                                      const float* bmax, int octant, simd::vfloat<K>& entry) {
+STRAHL_ALWAYS_INLINE inline simd::vmask<K> rays_box(const ch12::lane_rays<K>& r, const float* bmin,
+                                                    const float* bmax, int octant, simd::vfloat<K>& entry) {
     using vf = simd::vfloat<K>;
     vf near[3], far[3];
     for (int a = 0; a < 3; ++a) {
@@ -58,7 +59,7 @@ struct ray_node_slab : ch13::plane_rows<N> {
         for (int a = 0; a < 3; ++a)
             inv[a] = vf(p.inv[a][k]), org_near[a] = vf(p.org_near[a][k]), org_far[a] = vf(p.org_far[a][k]);
     }
-    [[gnu::always_inline]] vf entry(const ch13::wide_node<N>& n, float t0, float t1, simd::vmask<N>& hit) const {
+    STRAHL_ALWAYS_INLINE vf entry(const ch13::wide_node<N>& n, float t0, float t1, simd::vmask<N>& hit) const {
         vf near[3], far[3];
         for (int a = 0; a < 3; ++a)
             near[a] = vf::load(this->row(n, this->near_row[a])), far[a] = vf::load(this->row(n, this->far_row[a]));

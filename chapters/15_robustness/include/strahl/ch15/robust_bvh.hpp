@@ -11,6 +11,7 @@
 //                 the ray's slack (tree_query.hpp), which also covers the triangle test's own error in t,
 //                 so that the answers equal brute force's with the same test.
 #pragma once
+#include "strahl/inlining.hpp"
 #include "strahl/accel.hpp"
 #include "strahl/ch01/primitive_sets.hpp"
 #include "strahl/ch01/shapes.hpp"
@@ -62,8 +63,8 @@ public:
         if constexpr (K == test_kind::watertight) return {make_shear(r.dir)};
         else return {};
     }
-    [[gnu::always_inline]] bool test(std::uint32_t i, const ray& r, const context& c, float& t, float& u,
-                                     float& v) const {
+    STRAHL_ALWAYS_INLINE bool test(std::uint32_t i, const ray& r, const context& c, float& t, float& u,
+                                   float& v) const {
         const std::array<vec3, 3>& p = tris_[i];
         if constexpr (K == test_kind::mt) return ch01::intersect_triangle(r, p[0], p[1], p[2], t, u, v);
         else if constexpr (K == test_kind::mt_epsilon) return intersect_mt_epsilon(r, p[0], p[1], p[2], t, u, v);
@@ -93,7 +94,7 @@ private:
 struct plain_slab : ch05::plane_choice {
     vec3 org, inv_dir;
     explicit plain_slab(const ray& r) : plane_choice(r.dir), org(r.org), inv_dir(1.0f / r.dir) {}
-    [[gnu::always_inline]] float entry(const ch04::bvh_node& n, float t0, float t1) const {
+    STRAHL_ALWAYS_INLINE float entry(const ch04::bvh_node& n, float t0, float t1) const {
         const float* planes = n.bmin;
         for (int a = 0; a < 3; ++a) {
             const float near = (planes[near_plane[a]] - org[a]) * inv_dir[a];
