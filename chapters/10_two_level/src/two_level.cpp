@@ -1,4 +1,5 @@
-// The two-level BVH (two_level.hpp): build, updates, and the walk through both levels.
+// The two-level BVH (two_level.hpp): build, updates, and the any-hit walk through both levels. The
+// closest-hit walk is exercise 10.3 (exercises/10_two_level/instance_walk.cpp); any() below is its model.
 #include "strahl/ch10/two_level.hpp"
 #include "strahl/ch01/shapes.hpp"
 #include "strahl/ch01/primitive_sets.hpp"
@@ -192,38 +193,10 @@ double two_level::sah_cost() const {
     return cost;
 }
 
-// ---- The walk ----
+// ---- The walk, any hit ----
 
-// Instance k's mesh, for the world ray r (its tmax the closest hit so far): the ray moved into object space,
-// chapter 05's walk through the mesh's tree, each hit recorded under its flattened id; r.tmax follows.
-template <class Stats>
-void two_level::visit(std::uint32_t k, ray& r, hit& best, Stats& stats) const {
-    const instance_data& inst = instances_[k];
-    const mesh_data& m = meshes_[inst.mesh];
-    ray o = inst.identity ? r : to_object(r, inst.to_object);
-    o.tmax = r.tmax;
-    const auto test = [&](std::uint32_t id) {
-        float t, u, v;
-        stats.prim_test();
-        const auto& tri = m.triangles[id];
-        if (ch01::intersect_triangle(o, tri[0], tri[1], tri[2], t, u, v) &&
-            ch01::record_closest(inst.first_id + id, t, u, v, o, best))
-            best.inst = k;
-    };
-    for (const std::uint32_t id : m.tree.loose) test(id);
-    if (!placeable(o)) {
-        // A ray the object space cannot place (a transform that shrinks the direction to nothing): every
-        // triangle of the mesh, as brute force does.
-        for (std::uint32_t id = 0; id < m.triangles.size(); ++id) test(id);
-    } else if (!m.tree.nodes.empty()) {
-        ch05::fast_traverse(m.tree, o, stats, [&](std::uint32_t first, std::uint32_t count) {
-            for (std::uint32_t j = 0; j < count; ++j) test(m.tree.prim_ids[first + j]);
-            return false;
-        });
-    }
-    r.tmax = o.tmax;
-}
-
+// Whether instance k's mesh blocks the world ray r: the ray moved into object space, chapter 05's walk
+// through the mesh's tree, stopped at the first triangle hit.
 template <class Stats>
 bool two_level::blocks(std::uint32_t k, const ray& r, Stats& stats) const {
     const instance_data& inst = instances_[k];
@@ -253,27 +226,6 @@ bool two_level::blocks(std::uint32_t k, const ray& r, Stats& stats) const {
 }
 
 template <class Stats>
-hit two_level::closest(const ray& query, Stats& stats) const {
-    stats.ray();
-    hit best;
-    if (!(query.tmin < query.tmax)) return best;
-    ray r = query;
-    if (!placeable(r)) {
-        // Brute force's answer: every instance in order (visit() then tests every triangle of each).
-        for (std::uint32_t k = 0; k < instances_.size(); ++k) visit(k, r, best, stats);
-        return best;
-    }
-    if (!top_.nodes.empty())
-        ch05::fast_traverse(top_, r, stats, [&](std::uint32_t first, std::uint32_t count) {
-            for (std::uint32_t j = 0; j < count; ++j) visit(top_.prim_ids[first + j], r, best, stats);
-            return false;
-        });
-    // Instances whose world box is not finite (a mesh of loose triangles only) sit outside the top level.
-    for (const std::uint32_t k : top_.loose) visit(k, r, best, stats);
-    return best;
-}
-
-template <class Stats>
 bool two_level::any(const ray& query, Stats& stats) const {
     stats.ray();
     if (!(query.tmin < query.tmax)) return false;
@@ -294,8 +246,6 @@ bool two_level::any(const ray& query, Stats& stats) const {
     return found;
 }
 
-template hit two_level::closest(const ray&, not_counting&) const;
-template hit two_level::closest(const ray&, counting&) const;
 template bool two_level::any(const ray&, not_counting&) const;
 template bool two_level::any(const ray&, counting&) const;
 
