@@ -15,7 +15,7 @@ using namespace strahl::ch15;
 namespace {
 
 // Rays from inside a sphere (at `at`, of radius `scale`) aimed at every vertex and every edge's midpoint.
-std::vector<ray> aimed_rays(const triangle_mesh& m, const vec3& inside) {
+std::vector<ray> vertex_and_edge_rays(const triangle_mesh& m, const vec3& inside) {
     std::vector<ray> rays;
     for (const vec3& p : m.positions) rays.push_back(ray{inside, p - inside, 0.0f, inf});
     for (const uvec3& f : m.indices)
@@ -84,7 +84,7 @@ TEST_CASE("ch15 structures: every triangle test in chapter 05's fast walk equals
         robust_bvh<test_kind::mt, box_kind::fast> t;
         t.build(s);
         std::vector<ray> rays = test::nasty_rays(t.tree(), nasty, 15);
-        const std::vector<ray> aimed = aimed_rays(s.mesh, s.mesh.bounds().centroid() + vec3(0.01f, -0.02f, 0.005f));
+        const std::vector<ray> aimed = vertex_and_edge_rays(s.mesh, s.mesh.bounds().centroid() + vec3(0.01f, -0.02f, 0.005f));
         rays.insert(rays.end(), aimed.begin(), aimed.end());
         check_exact<test_kind::mt>(s, rays);
         check_exact<test_kind::watertight>(s, rays);
@@ -104,7 +104,7 @@ TEST_CASE("ch15 structures: no ray escapes the watertight tree, at every scale a
             if (place > 0.0f && scale < place * 0x1p-12f) continue;
             const vec3 at = vec3(0.6f, -0.3f, 0.74f) * place;
             scene s = test::mesh_only(placed_sphere(24, 48, scale, at));
-            const std::vector<ray> rays = aimed_rays(s.mesh, at + vec3(0.013f, -0.021f, 0.007f) * scale);
+            const std::vector<ray> rays = vertex_and_edge_rays(s.mesh, at + vec3(0.013f, -0.021f, 0.007f) * scale);
             INFO("sphere of radius " << scale << " at " << place << ", " << rays.size() << " rays");
             robust_bvh<test_kind::watertight, box_kind::fast> wt;
             robust_bvh<test_kind::watertight, box_kind::conservative> wt_conservative;

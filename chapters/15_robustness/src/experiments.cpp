@@ -44,30 +44,12 @@ std::size_t aimed_ray_count(int stacks, int slices) {
     return 2 * (vertices + 3 * triangles);
 }
 
-namespace {
 vec3 random_point(pcg32& g, const placement& p) {
     const float a = g.next_float(), b = g.next_float();
     return p.centre() + sample_sphere(vec2(a, b)) * p.scale;
 }
-}  // namespace
 
-aimed_rays make_aimed_rays(const triangle_mesh& m, const placement& p, std::uint64_t seed) {
-    aimed_rays out;
-    const vec3 o = p.inside();
-    out.rays.reserve(2 * (m.positions.size() + 3 * m.triangle_count()));
-    for (const vec3& v : m.positions) out.rays.push_back(ray{o, v - o, 0.0f, inf});
-    out.bounds[1] = out.rays.size();
-    for (const uvec3& f : m.indices)
-        for (int k = 0; k < 3; ++k) {
-            const vec3 mid = 0.5f * (m.positions[f[k]] + m.positions[f[(k + 1) % 3]]);
-            out.rays.push_back(ray{o, mid - o, 0.0f, inf});
-        }
-    out.bounds[2] = out.rays.size();
-    pcg32 g(seed, 15);
-    for (std::size_t i = 0, n = out.bounds[2]; i < n; ++i) out.rays.push_back(ray{o, random_point(g, p) - o, 0.0f, inf});
-    out.bounds[3] = out.rays.size();
-    return out;
-}
+// make_aimed_rays: exercise 15.4 (exercises/15_robustness/aimed_rays.cpp).
 
 std::vector<std::uint8_t> found(const accel& a, std::span<const ray> rays, progress_bar* bar) {
     std::vector<std::uint8_t> out(rays.size());

@@ -5,6 +5,7 @@
 #include "strahl/accel.hpp"
 #include "strahl/ch15/robust_bvh.hpp"
 #include "strahl/progress.hpp"
+#include "strahl/rng.hpp"
 #include <array>
 #include <cstdint>
 #include <span>
@@ -30,10 +31,14 @@ std::vector<placement> all_placements();
 // tessellated_sphere(stacks, slices), scaled and moved to p.
 triangle_mesh placed_sphere(int stacks, int slices, const placement& p);
 
-// The escape test's rays for one sphere, from p.inside(): first one aimed at every vertex, then one at each
-// face side's edge midpoint (3 per triangle, as tests/15_robustness does: an edge is aimed at from both of
-// its triangles), then as many at random points of the ideal sphere (seeded by `seed`). Directions are
-// target - origin (not normalised, |dir| about the radius).
+// A random point of the ideal sphere the mesh approximates: p.centre() + p.scale * a uniform direction
+// (two of g's floats).
+vec3 random_point(pcg32& g, const placement& p);
+
+// The escape test's rays for one sphere, from p.inside() (exercise 15.4): first one aimed at every vertex,
+// then one at each face side's edge midpoint (3 per triangle: an edge is aimed at from both of its
+// triangles), then as many at random_point()s (g = pcg32(seed, 15)). Directions are target - origin (not
+// normalised, |dir| about the radius).
 enum class aim_kind { vertex, edge, random };
 inline constexpr aim_kind all_aims[] = {aim_kind::vertex, aim_kind::edge, aim_kind::random};
 const char* name(aim_kind k);
