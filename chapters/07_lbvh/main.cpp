@@ -24,6 +24,11 @@
 #include <tbb/parallel_sort.h>
 #include <thread>
 
+namespace strahl::ch07 {
+// The chapter's figure (src/diagrams.cpp): the Z-order curve and the radix tree, by the chapter's own code.
+std::vector<std::filesystem::path> write_diagrams(const std::filesystem::path& folder, bool force);
+}  // namespace strahl::ch07
+
 namespace {
 
 using namespace strahl;
@@ -266,8 +271,14 @@ int run(int argc, const char* const* argv) {
         .output_options("write the CSV files and the plots into DIR/ (default out/07_lbvh/)")
         .option("replot", "DIR", "", "only redraw the plots (phases.svg, build_vs_trace.svg, sort.svg) from the three CSV "
                 "files in DIR written earlier (no building, no tracing)")
-        .flag("quick", "the teapot and a soup of 20,000 triangles, 48 x 36 rays, one repeat");
+        .flag("quick", "the teapot and a soup of 20,000 triangles, 48 x 36 rays, one repeat")
+        .option("diagrams", "DIR", "", "only draw the chapter's figure into DIR/ (zorder.svg; --force to replace it)");
     if (!args.parse(argc, argv)) return 0;
+    if (args.has("diagrams")) {
+        for (const fs::path& f : ch07::write_diagrams(args.get("diagrams"), args.has("force")))
+            std::printf("wrote %s\n", f.string().c_str());
+        return 0;
+    }
     const bool quick = args.has("quick");
     options o;
     bool user_named = false;

@@ -20,6 +20,11 @@
 #include <sstream>
 #include <thread>
 
+namespace strahl::ch08 {
+// The chapter's figure (src/diagrams.cpp): a treelet before and after the subset DP, by the chapter's own code.
+std::vector<std::filesystem::path> write_diagrams(const std::filesystem::path& folder, bool force);
+}  // namespace strahl::ch08
+
 namespace {
 
 using namespace strahl;
@@ -91,8 +96,14 @@ int run(int argc, const char* const* argv) {
                 "(default out/08_hybrid_builders/)")
         .option("from-race", "CSV", "", "only draw pareto.svg and write pareto.csv from a race.csv (race --processes N "
                 "with chapters 04-08's *-fast BVH rows and embree-low, -medium and -high)")
-        .flag("quick", "the teapot and a soup of 20,000 triangles, 48 x 36 rays, one repeat");
+        .flag("quick", "the teapot and a soup of 20,000 triangles, 48 x 36 rays, one repeat")
+        .option("diagrams", "DIR", "", "only draw the chapter's figure into DIR/ (treelet.svg; --force to replace it)");
     if (!args.parse(argc, argv)) return 0;
+    if (args.has("diagrams")) {
+        for (const fs::path& f : strahl::ch08::write_diagrams(args.get("diagrams"), args.has("force")))
+            std::printf("wrote %s\n", f.string().c_str());
+        return 0;
+    }
     fs::path folder = "out/08_hybrid_builders";
     const bool user_named = args.has("out"), force = args.has("force");
     if (user_named) folder = args.get("out");
