@@ -23,6 +23,11 @@
 #include <map>
 #include <sstream>
 
+namespace strahl::ch10 {
+// The chapter's figure (src/diagrams.cpp): three instances and a ray moved into one, by the chapter's own code.
+std::vector<std::filesystem::path> write_diagrams(const std::filesystem::path& folder, bool force);
+}  // namespace strahl::ch10
+
 namespace {
 
 using namespace strahl;
@@ -285,8 +290,14 @@ int run(int argc, const char* const* argv) {
         .option("replot", "CSV", "", "only redraw update_vs_trace.svg and sah_drift.svg and rewrite summary.csv from an "
                 "animation.csv written earlier (no building, no tracing)")
         .flag("no-kd", "leave out the k-d tree (its build is the slowest by far)")
-        .flag("quick", "teapots and a sphere, 3 frames, 48 x 36 rays, 16 instances in the big field");
+        .flag("quick", "teapots and a sphere, 3 frames, 48 x 36 rays, 16 instances in the big field")
+        .option("diagrams", "DIR", "", "only draw the chapter's figure into DIR/ (instances.svg; --force to replace it)");
     if (!args.parse(argc, argv)) return 0;
+    if (args.has("diagrams")) {
+        for (const fs::path& f : strahl::ch10::write_diagrams(args.get("diagrams"), args.has("force")))
+            std::printf("wrote %s\n", f.string().c_str());
+        return 0;
+    }
     fs::path folder = "out/10_two_level";
     const bool user_named = args.has("out"), force = args.has("force");
     if (user_named) folder = args.get("out");

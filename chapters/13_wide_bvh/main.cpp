@@ -16,6 +16,11 @@
 #include <functional>
 #include <sstream>
 
+namespace strahl::ch13 {
+// The chapter's figure (src/diagrams.cpp): a binary tree and its 4-wide collapse, by the chapter's own code.
+std::vector<std::filesystem::path> write_diagrams(const std::filesystem::path& folder, bool force);
+}  // namespace strahl::ch13
+
 namespace {
 
 using namespace strahl;
@@ -150,8 +155,14 @@ int run(int argc, const char* const* argv) {
         .option("height", "N", "", "rows (default 3/4 of the width)")
         .option("repeats", "K", "5", "timed runs per measurement after a warm-up; the median is reported")
         .output_options("write wide.csv and speedup.svg into DIR/ (default out/13_wide_bvh/)")
-        .flag("quick", "the teapot in a stadium only, 96 x 72 rays, four trees");
+        .flag("quick", "the teapot in a stadium only, 96 x 72 rays, four trees")
+        .option("diagrams", "DIR", "", "only draw the chapter's figure into DIR/ (collapse.svg; --force to replace it)");
     if (!args.parse(argc, argv)) return 0;
+    if (args.has("diagrams")) {
+        for (const std::filesystem::path& f : strahl::ch13::write_diagrams(args.get("diagrams"), args.has("force")))
+            std::printf("wrote %s\n", f.string().c_str());
+        return 0;
+    }
     const bool quick = args.has("quick");
     fs::path folder = "out/13_wide_bvh";
     const bool user_named = args.has("out");
