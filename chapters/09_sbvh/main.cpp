@@ -18,6 +18,11 @@
 #include <map>
 #include <sstream>
 
+namespace strahl::ch09 {
+// The chapter's figure (src/diagrams.cpp): an object split against a spatial split, by the chapter's own code.
+std::vector<std::filesystem::path> write_diagrams(const std::filesystem::path& folder, bool force);
+}  // namespace strahl::ch09
+
 namespace {
 
 using namespace strahl;
@@ -218,8 +223,14 @@ int run(int argc, const char* const* argv) {
                 "default, budget=B, bins=K (chopped bins), leaf=N (max_leaf) or unsplit=0|1, comma-separated")
         .output_options("write compare.csv, alpha.csv and alpha.svg into DIR/ (default out/09_sbvh/)")
         .option("replot", "CSV", "", "only draw alpha.svg from an alpha.csv this program wrote")
-        .flag("quick", "the teapot in a stadium only, 48 x 36 rays, one repeat, alphas 1, 1e-5 and 0");
+        .flag("quick", "the teapot in a stadium only, 48 x 36 rays, one repeat, alphas 1, 1e-5 and 0")
+        .option("diagrams", "DIR", "", "only draw the chapter's figure into DIR/ (splits.svg; --force to replace it)");
     if (!args.parse(argc, argv)) return 0;
+    if (args.has("diagrams")) {
+        for (const fs::path& f : strahl::ch09::write_diagrams(args.get("diagrams"), args.has("force")))
+            std::printf("wrote %s\n", f.string().c_str());
+        return 0;
+    }
     fs::path folder = "out/09_sbvh";
     const bool user_named = args.has("out"), force = args.has("force");
     if (user_named) folder = args.get("out");
