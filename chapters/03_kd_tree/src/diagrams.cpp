@@ -14,11 +14,7 @@ namespace strahl::ch03 {
 
 namespace {
 
-std::string fixed(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.1f", v);
-    return buf;
-}
+std::string fixed(double v) { return number_text(v, "%.1f"); }
 
 void near_far_panel(diagram& d, double left, const ray& r, const std::string& heading) {
     const aabb node{vec3(0, 0, -1), vec3(10, 6, 1)};

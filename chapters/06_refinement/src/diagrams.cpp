@@ -17,11 +17,7 @@ namespace strahl::ch06 {
 
 namespace {
 
-std::string number(double v, bool sign = false) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, sign ? "%+.4g" : "%.4g", v);
-    return buf;
-}
+std::string number(double v, bool sign = false) { return number_text(v, sign ? "%+.4g" : "%.4g"); }
 
 std::uint32_t add_leaf(refine_tree& t, vec3 lo, vec3 hi) {
     refine_node n;

@@ -18,12 +18,6 @@ namespace strahl::ch08 {
 
 namespace {
 
-std::string number(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.3g", v);
-    return buf;
-}
-
 // C_T * inner areas + C_I * leaf areas below node n: the cost the DP gives a treelet leaf (C_T = C_I = 1).
 double subtree_cost(const binary_tree& t, std::uint32_t n) {
     const tree_node& x = t.nodes[n];
@@ -63,7 +57,7 @@ void draw_tree(diagram& d, const std::vector<drawn_node>& nodes, int root, doubl
         const bool leaf = x.left < 0;
         d.rect(p.x - 27, p.y - 18, p.x + 27, p.y + 18, {x.colour, leaf ? ink::pale_grey : ink::pale_blue, 1.5});
         d.text(p.x, p.y - 3, x.label, {13, "middle", ink::black, true});
-        d.text(p.x, p.y + 12, number(x.area), {11, "middle"});
+        d.text(p.x, p.y + 12, number_text(x.area), {11, "middle"});
     }
 }
 
@@ -162,8 +156,8 @@ diagram treelet_figure() {
     draw_tree(d, before, index[tl.root], 380, 70, 330, n);
     draw_tree(d, after, 0, 740, 70, 330, n);
     d.arrow(700, 60, 760, 60, {ink::black, "none", 2.0});
-    d.text(545, 410, "cost " + number(cost_before), {14, "middle", ink::black, true});
-    d.text(905, 410, "cost " + number(cost_after), {14, "middle", ink::red, true});
+    d.text(545, 410, "cost " + number_text(cost_before), {14, "middle", ink::black, true});
+    d.text(905, 410, "cost " + number_text(cost_after), {14, "middle", ink::red, true});
     d.text(725, 440, "cost = sum of the inner nodes' areas + the leaves' subtree costs (C_T = C_I = 1);", body);
     d.text(725, 458, "the five leaves' subtrees stay whole, only the four inner nodes above them are rewired", body);
     return d;

@@ -17,12 +17,6 @@ namespace strahl::ch09 {
 
 namespace {
 
-std::string number(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.3g", v);
-    return buf;
-}
-
 void box(diagram& d, const aabb& b, const pen& p, double grow = 0.0) {
     if (!b.is_empty()) d.rect(b.min.x - grow, b.min.y - grow, b.max.x + grow, b.max.y + grow, p);
 }
@@ -115,9 +109,9 @@ diagram splits_figure() {
     box(d, spatial_right, {ink::red, "none", 2.5}, 0.06);
     d.pixels();
     d.text(245, 426, "the children's boxes (blue, red) overlap", body);
-    d.text(245, 446, "SAH cost of the split " + number(object_cost), {14, "middle", ink::black, true});
+    d.text(245, 446, "SAH cost of the split " + number_text(object_cost), {14, "middle", ink::black, true});
     d.text(755, 426, "8 chopped bins (orange), the plane, the sliver's two halves (dashed)", body);
-    d.text(755, 446, "SAH cost of the split " + number(spatial_cost) + ", the sliver counted on both sides",
+    d.text(755, 446, "SAH cost of the split " + number_text(spatial_cost) + ", the sliver counted on both sides",
            {14, "middle", ink::red, true});
     d.text(500, 472, "cost = (A(left) N(left) + A(right) N(right)) / A(node), C_T = C_I = 1", body);
     return d;

@@ -18,12 +18,6 @@ namespace strahl::ch10 {
 
 namespace {
 
-std::string number(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.3g", v);
-    return buf;
-}
-
 // The ray's path from t = 0 to t = t_end (seen from above), marks at t = 1, 2, ... and at the hit.
 void draw_ray(diagram& d, const ray& r, float t_end, float t_hit, const char* colour) {
     const vec3 a = r.org, b = r.org + t_end * r.dir;
@@ -90,7 +84,7 @@ diagram instances_figure() {
     if (hit_instance >= 0) draw_ray(d, world, t_hit + 0.6f, t_hit, ink::black);
     d.pixels();
     d.text(240, 440, "dashed: the instances' world boxes and the top level's root", body);
-    d.text(240, 458, "red: the closest hit, t = " + number(t_hit), body);
+    d.text(240, 458, "red: the closest hit, t = " + number_text(t_hit), body);
 
     // Right: the mesh in object space, its tree's boxes, the object ray.
     if (hit_instance >= 0) {

@@ -19,12 +19,6 @@ namespace strahl::ch13 {
 
 namespace {
 
-std::string number(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.2f", v);
-    return buf;
-}
-
 bool same_box(const ch04::bvh_node& n, const aabb& b) {
     const float lo[3] = {b.min.x, b.min.y, b.min.z}, hi[3] = {b.max.x, b.max.y, b.max.z};
     return std::memcmp(n.bmin, lo, sizeof lo) == 0 && std::memcmp(n.bmax, hi, sizeof hi) == 0;
@@ -131,7 +125,7 @@ diagram collapse_figure() {
             const double x = left + 60 + 140.0 * i;
             std::string v;
             const char* colour = root.used(i) ? ink::black : ink::grey;
-            if (r < 6) v = root.used(i) ? number(r < 3 ? root.lo[r][i] : root.hi[r - 3][i]) : (r < 3 ? "+inf" : "-inf");
+            if (r < 6) v = root.used(i) ? number_text(r < 3 ? root.lo[r][i] : root.hi[r - 3][i], "%.2f") : (r < 3 ? "+inf" : "-inf");
             else if (!root.used(i)) v = "unused";
             else if (is_leaf(root.child[i])) v = "leaf: block " + std::to_string(leaf_first(root.child[i]));
             else v = "node " + std::to_string(root.child[i]), colour = colours[root.child[i] % 5];

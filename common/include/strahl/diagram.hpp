@@ -2,6 +2,7 @@
 // BVH boxes and node arrays, slabs, split planes, SAH bins, rotations) from the data their own code builds,
 // so that a figure cannot drift from the code. SVG is text, as in plot.hpp: any browser opens it.
 #pragma once
+#include <cstdio>
 #include <filesystem>
 #include <functional>
 #include <string>
@@ -90,5 +91,12 @@ std::vector<std::filesystem::path> write_figures(const std::filesystem::path& fo
 
 // The text with <, >, & and " written as entities, for SVG (and any XML) text and attributes.
 std::string svg_escape(const std::string& text);
+
+// A number as the figures print it, through a printf format ("%.3g": 3 significant digits).
+inline std::string number_text(double v, const char* format = "%.3g") {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, format, v);
+    return buf;
+}
 
 }  // namespace strahl
