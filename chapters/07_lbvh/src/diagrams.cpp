@@ -87,10 +87,7 @@ diagram zorder_figure() {
     for (std::uint32_t k = 0; k < points; ++k) {
         const vec3 c = centroid[ids[k]];
         d.circle(c.x, c.y, 9, {half_ink(k, false), half_ink(k, true), 1.5});
-        const point2 p = d.to_pixel(c.x, c.y);
-        d.pixels();
-        d.text(p.x, p.y + 4, std::to_string(k), {11, "middle", ink::black, true});
-        d.view(0, 0, cells, cells, 20, 40, 380, 380);
+        d.text(c.x, c.y - 4 / d.scale(), std::to_string(k), {11, "middle", ink::black, true});  // 4 pixels down
     }
     d.pixels();
     d.text(210, 446, "dashed grey: the curve through all 64 cells in code order;", small);

@@ -54,29 +54,32 @@ diagram collapse_figure() {
     };
     std::vector<int> owner(binary.nodes.size(), -1);
     std::vector<bool> slot(binary.nodes.size(), false);
+    // The binary node at or below b with the box's bits (depth first), or -1.
+    const std::function<int(std::uint32_t, const aabb&)> find = [&](std::uint32_t b, const aabb& box) {
+        if (same_box(binary.nodes[b], box)) return int(b);
+        if (binary.nodes[b].is_leaf()) return -1;
+        for (const std::uint32_t c : kids(b))
+            if (const int f = find(c, box); f >= 0) return f;
+        return -1;
+    };
+    // Below b down to the slots: opened inside wide node w (a leaf slot is w's too; an inner slot is the
+    // origin of its own wide node, already assigned).
+    const std::function<void(std::uint32_t, int)> paint = [&](std::uint32_t b, int w) {
+        if (owner[b] < 0) owner[b] = w;
+        if (!slot[b])
+            for (const std::uint32_t c : kids(b)) paint(c, w);
+    };
     const std::function<void(int, std::uint32_t)> assign = [&](int w, std::uint32_t origin) {
         const wide_node<4>& n = wide.nodes[std::size_t(w)];
         owner[origin] = w;
-        const std::function<bool(std::uint32_t, const aabb&, std::uint32_t)> find = [&](std::uint32_t b, const aabb& box,
-                                                                                     std::uint32_t ref) {
-            if (same_box(binary.nodes[b], box)) {
-                slot[b] = true;
-                if (!is_leaf(ref)) assign(int(ref), b);
-                else owner[b] = w;
-                return true;
-            }
-            if (binary.nodes[b].is_leaf()) return false;
-            for (const std::uint32_t c : kids(b))
-                if (find(c, box, ref)) {
-                    if (owner[b] < 0) owner[b] = w;
-                    return true;
-                }
-            return false;
-        };
-        for (int i = 0; i < 4; ++i)
-            if (n.used(i))
-                for (const std::uint32_t c : kids(origin))
-                    if (!binary.nodes[origin].is_leaf() && find(c, n.box(i), n.child[i])) break;
+        for (int i = 0; i < 4; ++i) {
+            if (!n.used(i)) continue;
+            int s = find(origin + 1, n.box(i));
+            if (s < 0) s = find(binary.nodes[origin].offset, n.box(i));
+            slot[std::size_t(s)] = true;
+            if (!is_leaf(n.child[i])) assign(int(n.child[i]), std::uint32_t(s));
+        }
+        for (const std::uint32_t c : kids(origin)) paint(c, w);
     };
     if (!is_leaf(wide.root_ref)) assign(0, 0);
 
