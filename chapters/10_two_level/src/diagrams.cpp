@@ -5,9 +5,9 @@
 //   space (to_object, exercise 10.1) over the mesh's own tree, chapter 05's binned SAH (right). The marks at
 //   t = 1, 2, 3 and the hit sit on the same points of the mesh in both spaces: the direction is not
 //   normalised, so t carries over.
-#include "strahl/ch01/shapes.hpp"
 #include "strahl/ch05/sah.hpp"
 #include "strahl/ch10/object_ray.hpp"
+#include "strahl/ch10/two_level.hpp"
 #include "strahl/diagram.hpp"
 #include "strahl/instancing.hpp"
 #include <cstdio>
@@ -43,19 +43,18 @@ diagram instances_figure() {
     // A world ray from above the plane down onto it: it reaches z = 0 at t = 4.
     const ray world{vec3(1.2f, 7.2f, 2.0f), vec3(1.35f, -1.2f, -0.5f)};
 
-    // The closest hit over the instances, each tested in its object space (the instanced brute force).
-    int hit_instance = -1;
-    float t_hit = inf;
-    ray object_ray;
-    for (int k = 0; k < 3; ++k) {
-        const ray o = to_object(world, *inverse(to_world[k]));
-        for (std::size_t f = 0; f < house.indices.size(); ++f) {
-            const std::array<vec3, 3> tri = house.triangle(f);
-            float t, u, v;
-            if (ch01::intersect_triangle(o, tri[0], tri[1], tri[2], t, u, v) && t < t_hit)
-                t_hit = t, hit_instance = k, object_ray = o;
-        }
-    }
+    // The closest hit over the instances: the chapter's oracle, the instanced brute force.
+    instanced_meshes scene;
+    scene.meshes = {house};
+    scene.names = {"house"};
+    for (const affine& a : to_world) scene.instances.push_back({0, a});
+    instanced_brute brute;
+    brute.build(scene);
+    not_counting no_stats;
+    const hit h = brute.closest(world, no_stats);
+    const int hit_instance = h.found() ? int(h.inst) : -1;
+    const float t_hit = h.t;
+    const ray object_ray = h.found() ? to_object(world, *inverse(to_world[hit_instance])) : world;
 
     diagram d(1000, 470);
     const font title{15, "middle", ink::black, true}, body{13, "middle"};
