@@ -20,6 +20,11 @@
 #include <fstream>
 #include <sstream>
 
+namespace strahl::ch11 {
+// The chapter's figure (src/diagrams.cpp): one leaf as each step holds it in memory.
+std::vector<std::filesystem::path> write_diagrams(const std::filesystem::path& folder, bool force);
+}  // namespace strahl::ch11
+
 namespace {
 
 using namespace strahl;
@@ -205,8 +210,14 @@ int run(int argc, const char* const* argv) {
                                    "(default out/11_devirtualize/)")
         .option("from-race", "CSV", "", "only draw staircase.svg from a race's medians (race.csv of race --processes N "
                                          "with the ch11 rows first; ch13-bvh16 and embree-medium where present)")
-        .flag("quick", "the teapot in a stadium only, 64 x 48 rays, a 32 x 32 render, one repeat");
+        .flag("quick", "the teapot in a stadium only, 64 x 48 rays, a 32 x 32 render, one repeat")
+        .option("diagrams", "DIR", "", "only draw the chapter's figure into DIR/ (layouts.svg; --force to replace it)");
     if (!args.parse(argc, argv)) return 0;
+    if (args.has("diagrams")) {
+        for (const fs::path& f : strahl::ch11::write_diagrams(args.get("diagrams"), args.has("force")))
+            std::printf("wrote %s\n", f.string().c_str());
+        return 0;
+    }
     if (args.has("from-race")) {
         const std::vector<step_row> rows = read_race(args.get("from-race"));
         const fs::path folder = args.has("out") ? fs::path(args.get("out")) : fs::path("out/11_devirtualize");

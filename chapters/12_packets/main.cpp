@@ -21,6 +21,11 @@
 #include <optional>
 #include <sstream>
 
+namespace strahl::ch12 {
+// The chapter's figure (src/diagrams.cpp): a packet against three boxes, by the chapter's own tests.
+std::vector<std::filesystem::path> write_diagrams(const std::filesystem::path& folder, bool force);
+}  // namespace strahl::ch12
+
 namespace {
 
 using namespace strahl;
@@ -348,8 +353,14 @@ int run(int argc, const char* const* argv) {
         .output_options("write packets.csv, lanes.csv, vs_ch13.svg and SCENE_lanes.png into DIR/ "
                 "(default out/12_packets/)")
         .flag("strips", "packets of consecutive rays (rows of 4 to 256) instead of tiles of the image")
-        .flag("quick", "the teapot in a stadium only, 96 x 72 rays");
+        .flag("quick", "the teapot in a stadium only, 96 x 72 rays")
+        .option("diagrams", "DIR", "", "only draw the chapter's figure into DIR/ (packet.svg; --force to replace it)");
     if (!args.parse(argc, argv)) return 0;
+    if (args.has("diagrams")) {
+        for (const fs::path& f : strahl::ch12::write_diagrams(args.get("diagrams"), args.has("force")))
+            std::printf("wrote %s\n", f.string().c_str());
+        return 0;
+    }
     const bool quick = args.has("quick"), strips = args.has("strips");
     fs::path folder = "out/12_packets";
     const bool user_named = args.has("out");

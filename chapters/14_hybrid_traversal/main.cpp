@@ -31,6 +31,11 @@
 #include <optional>
 #include <sstream>
 
+namespace strahl::ch14 {
+// The chapter's figure (src/diagrams.cpp): two packets through the hybrid tracer, where their rays left.
+std::vector<std::filesystem::path> write_diagrams(const std::filesystem::path& folder, bool force);
+}  // namespace strahl::ch14
+
 namespace {
 
 using namespace strahl;
@@ -412,8 +417,14 @@ int run(int argc, const char* const* argv) {
                 "flight_last.png and flight.gif into DIR/ (default out/14_hybrid_traversal/)")
         .flag("no-sweep", "skip the threshold sweep (and its heat maps)")
         .flag("no-flight", "skip the flight")
-        .flag("quick", "the teapot in a stadium only: the sweep at 96 x 72 rays, a flight of 4 frames of 160 x 90");
+        .flag("quick", "the teapot in a stadium only: the sweep at 96 x 72 rays, a flight of 4 frames of 160 x 90")
+        .option("diagrams", "DIR", "", "only draw the chapter's figure into DIR/ (switch.svg; --force to replace it)");
     if (!args.parse(argc, argv)) return 0;
+    if (args.has("diagrams")) {
+        for (const fs::path& f : strahl::ch14::write_diagrams(args.get("diagrams"), args.has("force")))
+            std::printf("wrote %s\n", f.string().c_str());
+        return 0;
+    }
     const bool quick = args.has("quick"), sweep = !args.has("no-sweep"), flight = !args.has("no-flight");
     if (!sweep && !flight) throw usage_error("--no-sweep and --no-flight leave nothing to do");
     fs::path folder = "out/14_hybrid_traversal";

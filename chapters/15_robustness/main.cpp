@@ -32,6 +32,11 @@
 #include <map>
 #include <sstream>
 
+namespace strahl::ch15 {
+// The chapter's figures (src/diagrams.cpp): the crack, the shear to ray space, the spawn offsets.
+std::vector<std::filesystem::path> write_diagrams(const std::filesystem::path& folder, bool force);
+}  // namespace strahl::ch15
+
 namespace {
 
 using namespace strahl;
@@ -399,8 +404,15 @@ int run(int argc, const char* const* argv) {
         .flag("quick", "the two smallest spheres, 1000 spawn points, the far-away teapot at 32 x 24 rays, the scaled teapot at 16 x 12, the teapot at 64 x 48 for the speed columns, one repeat")
         .flag("far-only", "only the teapot seen from far away: write far.csv and nothing else")
         .flag("scale-only", "only the teapot scaled from 1e-30 to 1e16: write scale.csv and scale.svg and nothing else")
-        .option("replot", "CSV", "", "only redraw scale.svg from a scale.csv written earlier (no tracing)");
+        .option("replot", "CSV", "", "only redraw scale.svg from a scale.csv written earlier (no tracing)")
+        .option("diagrams", "DIR", "", "only draw the chapter's figures into DIR/ (crack.svg, shear.svg, offsets.svg; "
+                                       "--force to replace them)");
     if (!args.parse(argc, argv)) return 0;
+    if (args.has("diagrams")) {
+        for (const fs::path& f : write_diagrams(args.get("diagrams"), args.has("force")))
+            std::printf("wrote %s\n", f.string().c_str());
+        return 0;
+    }
     const fs::path single_folder = args.has("out") ? fs::path(args.get("out")) : fs::path("out/15_robustness");
     if (args.has("from-race")) {
         const fs::path& folder = single_folder;
