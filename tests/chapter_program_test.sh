@@ -324,6 +324,23 @@ if [[ $nn == 08 ]]; then
     [[ ! -e $dir/pareto2 ]] || fail "--from-race of a foreign file made its output folder"
 fi
 
+# Chapter 11's step report (exercise 11.4): a race folder of two processes (the committed medians copied)
+# gives step_report.csv with the paired ratios and the counter that moved; a folder without processes/ is
+# refused, naming it, before any file is written.
+if [[ $nn == 11 ]]; then
+    race_csv=$(dirname "$0")/../slides/img/16_race/race_ch11.csv
+    mkdir -p "$dir/steprace/processes/1" "$dir/steprace/processes/2"
+    cp "$race_csv" "$dir/steprace/processes/1/race.csv"
+    cp "$race_csv" "$dir/steprace/processes/2/race.csv"
+    runs "--step-report" 0 "$program" --step-report "$dir/steprace" --out "$dir/step"
+    contains "$dir/out" "your prediction" "--step-report"
+    [[ $(grep -c ',2,' "$dir/step/step_report.csv") -ge 6 ]] || fail "--step-report: fewer than 6 rows over 2 processes"
+    contains "$dir/step/step_report.csv" "memory bytes" "--step-report: the counter that moved"
+    runs "--step-report of a folder without processes" 1 "$program" --step-report "$dir/empty11" --out "$dir/step2"
+    contains "$dir/err" "processes" "--step-report of a folder without processes"
+    [[ ! -e $dir/step2/step_report.csv ]] || fail "--step-report of a folder without processes wrote a report"
+fi
+
 # Chapters 03 to 06 draw their figures (--diagrams DIR): whole SVG files in a folder made for them, not
 # replaced without --force; the exercise track's program draws them too or names the unfinished exercise.
 case $nn in

@@ -7,6 +7,7 @@
 // materials and with a switch; rays per second, the images compared bit for bit. Tables, CSV files, plots.
 #include "strahl/ch01/ray_sets.hpp"
 #include "strahl/ch05/accel.hpp"
+#include "strahl/ch11/step_report.hpp"
 #include "strahl/ch11/steps.hpp"
 #include "strahl/parallel.hpp"
 #include "strahl/plot.hpp"
@@ -196,6 +197,41 @@ std::vector<step_row> read_race(const fs::path& csv) {
     return rows;
 }
 
+// --step-report DIR (exercise 11.4): the prediction beside what the race in DIR measured, process by process
+// (DIR/processes/*/race.csv of race --processes N); step_report.csv.
+void step_report(const fs::path& race_dir, const fs::path& csv) {
+    using namespace strahl::ch11;
+    std::vector<fs::path> files;
+    std::error_code ec;
+    for (const auto& e : fs::directory_iterator(race_dir / "processes", ec))
+        if (fs::exists(e.path() / "race.csv")) files.push_back(e.path() / "race.csv");
+    if (ec || files.empty())
+        throw std::runtime_error((race_dir / "processes").string() + ": no race.csv of a race --processes N run there");
+    std::sort(files.begin(), files.end());
+    std::vector<std::vector<race_csv_row>> processes;
+    for (const fs::path& f : files) processes.push_back(read_race_rows(f));
+    const step_prediction p = my_prediction();  // exercise 11.4a
+    const std::vector<step_ratio> ratios = compare_steps(processes, p.before, p.after);  // exercise 11.4c
+    if (ratios.empty())
+        throw std::runtime_error(race_dir.string() + ": no process has both " + p.before + " and " + p.after +
+                                 ": race --processes N --accels " + p.before + "," + p.after);
+    std::printf("your prediction: %s over %s, x%.3g on diffuse rays, explained by: %s\n", p.after.c_str(),
+                p.before.c_str(), p.ratio, p.counter.c_str());
+    std::printf("measured in %zu processes (paired: %s / %s in each process):\n", files.size(), p.after.c_str(), p.before.c_str());
+    std::printf("  %-16s %-8s %9s %17s %8s   %s\n", "scene", "rays", "median", "range", "verdict", "the counter that moved");
+    std::ostringstream out;
+    out << "scene,rays,before,after,processes,median,min,max,verdict,moved,moved_ratio,predicted_ratio,predicted_counter\n";
+    for (const step_ratio& s : ratios) {
+        std::printf("  %-16s %-8s %9.3f %8.3f to %5.3f %8s   %s (x%.3g)\n", s.scene.c_str(), s.rays.c_str(), s.median,
+                    s.lo, s.hi, s.verdict.c_str(), s.moved.c_str(), s.moved_ratio);
+        out << s.scene << ',' << s.rays << ',' << p.before << ',' << p.after << ',' << s.ratios.size() << ','
+            << s.median << ',' << s.lo << ',' << s.hi << ',' << s.verdict << ',' << s.moved << ',' << s.moved_ratio << ','
+            << p.ratio << ',' << p.counter << '\n';
+    }
+    write_text(csv, out.str());
+    std::printf("wrote %s\n", csv.string().c_str());
+}
+
 int run(int argc, const char* const* argv) {
     cli args("ch11", "Chapter 11, model only what the scene requires (" + std::string(track_name()) + "): one tree, the same rays, six "
              "ways to reach the primitives (virtual, variant, type-sorted, triangles, inlined, soa), one thread; then "
@@ -211,11 +247,19 @@ int run(int argc, const char* const* argv) {
         .option("from-race", "CSV", "", "only draw staircase.svg from a race's medians (race.csv of race --processes N "
                                          "with the ch11 rows first; ch13-bvh16 and embree-medium where present)")
         .flag("quick", "the teapot in a stadium only, 64 x 48 rays, a 32 x 32 render, one repeat")
+        .option("step-report", "DIR", "", "only exercise 11.4's report: your prediction beside what a race run with "
+                "--processes N --out DIR measured (DIR/processes/*/race.csv); writes step_report.csv")
         .option("diagrams", "DIR", "", "only draw the chapter's figure into DIR/ (layouts.svg; --force to replace it)");
     if (!args.parse(argc, argv)) return 0;
     if (args.has("diagrams")) {
         for (const fs::path& f : strahl::ch11::write_diagrams(args.get("diagrams"), args.has("force")))
             std::printf("wrote %s\n", f.string().c_str());
+        return 0;
+    }
+    if (args.has("step-report")) {
+        const fs::path folder = args.has("out") ? fs::path(args.get("out")) : fs::path("out/11_devirtualize");
+        prepare_output(folder / "step_report.csv", args.has("out"), args.has("force"));
+        step_report(args.get("step-report"), folder / "step_report.csv");
         return 0;
     }
     if (args.has("from-race")) {

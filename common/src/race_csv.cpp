@@ -15,7 +15,9 @@ std::vector<race_csv_row> read_race_rows(const std::filesystem::path& file) {
         r.ray_count = std::size_t(number(6));
         r.build_ms = number(7), r.memory_bytes = number(8);
         r.closest_mrays_s = number(10), r.closest_differing = std::size_t(number(16));
+        r.closest_box_per_ray = number(13), r.closest_prim_per_ray = number(14), r.closest_nodes_per_ray = number(15);
         r.any_mrays_s = number(17), r.any_differing = std::size_t(number(22));
+        r.any_box_per_ray = number(20), r.any_prim_per_ray = number(21);
         if (c.cells.size() > 23) r.cpu = c.cells[23];
         rows.push_back(std::move(r));
     }

@@ -21,12 +21,16 @@ inline constexpr const char* race_csv_header =
 // Readers take files with and without them.
 inline constexpr const char* race_csv_machine_header = "cpu,threads,kernels,date";
 
-// One row, the columns the plots use. scene is the file's stem ("bunny" for bunny.ply); rays is primary,
-// diffuse or shadow; a speed the race left empty (shadow rays have no closest-hit speed) reads 0.
+// One row, the columns the plots and chapter 11's step report use. scene is the file's stem ("bunny" for
+// bunny.ply); rays is primary, diffuse or shadow; a cell the race left empty (shadow rays have no
+// closest-hit figures) reads 0.
 struct race_csv_row {
     std::string scene, structure, chapter, rays;
     std::size_t triangles = 0, ray_count = 0;
     double build_ms = 0, memory_bytes = 0, closest_mrays_s = 0, any_mrays_s = 0;
+    // The exact counters, per ray: box tests, triangle tests and (closest hit only) nodes visited.
+    double closest_box_per_ray = 0, closest_prim_per_ray = 0, closest_nodes_per_ray = 0;
+    double any_box_per_ray = 0, any_prim_per_ray = 0;
     std::size_t closest_differing = 0, any_differing = 0;
     std::string cpu;  // empty in files written before the machine columns
 };
