@@ -21,7 +21,7 @@
 #include <thread>
 
 namespace strahl::ch08 {
-// The chapter's figure (src/diagrams.cpp): a treelet before and after the subset DP, by the chapter's own code.
+// The chapter's figures (src/diagrams.cpp): a treelet before and after the subset DP, and one round of PLOC.
 std::vector<std::filesystem::path> write_diagrams(const std::filesystem::path& folder, bool force);
 }  // namespace strahl::ch08
 
@@ -97,7 +97,7 @@ int run(int argc, const char* const* argv) {
         .option("from-race", "CSV", "", "only draw pareto.svg and write pareto.csv from a race.csv (race --processes N "
                 "with chapters 04-08's *-fast BVH rows and embree-low, -medium and -high)")
         .flag("quick", "the teapot and a soup of 20,000 triangles, 48 x 36 rays, one repeat")
-        .option("diagrams", "DIR", "", "only draw the chapter's figure into DIR/ (treelet.svg; --force to replace it)");
+        .option("diagrams", "DIR", "", "only draw the chapter's figures into DIR/ (treelet.svg, ploc.svg; --force to replace them)");
     if (!args.parse(argc, argv)) return 0;
     if (args.has("diagrams")) {
         for (const fs::path& f : strahl::ch08::write_diagrams(args.get("diagrams"), args.has("force")))

@@ -10,6 +10,7 @@
 #include "strahl/ch08/ploc.hpp"
 #include "strahl/parallel.hpp"
 #include "strahl/procedural.hpp"
+#include "strahl/rng.hpp"
 #include "bvh_rays.hpp"
 #include "exactness.hpp"
 #include "flat_bvh_check.hpp"
@@ -26,6 +27,27 @@ namespace {
 
 using test::hard_meshes;
 using test::same_tree;
+
+// Step a of a round, plainly: per position the nearest within r positions, the same distance and tie order
+// (a key per pair: gap, parity of the lower position, lower position).
+std::vector<std::size_t> plain_nearest(const std::vector<aabb>& boxes, std::size_t r) {
+    const std::size_t m = boxes.size();
+    std::vector<std::size_t> nn(m);
+    for (std::size_t i = 0; i < m; ++i) {
+        float best = std::numeric_limits<float>::infinity();
+        std::uint64_t best_key = ~std::uint64_t(0);
+        for (std::size_t j = i > r ? i - r : 0; j <= std::min(m - 1, i + r); ++j) {
+            if (j == i) continue;
+            const aabb u = unite(boxes[i], boxes[j]);
+            const vec3 e = u.max - u.min;
+            const float area = e.x * e.y + e.y * e.z + e.z * e.x;  // half the area, inf and NaN as FLT_MAX
+            const float d = area < std::numeric_limits<float>::max() ? area : std::numeric_limits<float>::max();
+            const std::uint64_t lo = std::min(i, j), key = (std::max(i, j) - lo) << 33 | (lo & 1) << 32 | lo;
+            if (d < best || (d == best && key < best_key)) best = d, best_key = key, nn[i] = j;
+        }
+    }
+    return nn;
+}
 
 // The paper's loop written plainly, serially, one cluster at a time, every distance of a cluster's window
 // computed afresh: the same Morton order, distance and tie order (a key per pair: gap, parity of the lower
@@ -46,20 +68,9 @@ binary_tree plain_ploc(const ch07::builder_inputs& in, std::size_t r) {
     }
     while (cluster.size() > 1) {
         const std::size_t m = cluster.size();
-        std::vector<std::size_t> nn(m);
-        for (std::size_t i = 0; i < m; ++i) {
-            float best = std::numeric_limits<float>::infinity();
-            std::uint64_t best_key = ~std::uint64_t(0);
-            for (std::size_t j = i > r ? i - r : 0; j <= std::min(m - 1, i + r); ++j) {
-                if (j == i) continue;
-                const aabb u = unite(t.nodes[cluster[i]].box, t.nodes[cluster[j]].box);
-                const vec3 e = u.max - u.min;
-                const float area = e.x * e.y + e.y * e.z + e.z * e.x;  // half the area, inf and NaN as FLT_MAX
-                const float d = area < std::numeric_limits<float>::max() ? area : std::numeric_limits<float>::max();
-                const std::uint64_t lo = std::min(i, j), key = (std::max(i, j) - lo) << 33 | (lo & 1) << 32 | lo;
-                if (d < best || (d == best && key < best_key)) best = d, best_key = key, nn[i] = j;
-            }
-        }
+        std::vector<aabb> boxes;
+        for (const std::uint32_t c : cluster) boxes.push_back(t.nodes[c].box);
+        const std::vector<std::size_t> nn = plain_nearest(boxes, r);
         std::vector<std::uint32_t> next;
         for (std::size_t i = 0; i < m; ++i) {
             const std::size_t j = nn[i];
@@ -198,4 +209,24 @@ TEST_CASE("ch08 PLOC: chapter 05's fast walk over the flattened tree equals brut
             INFO(a->name() << " on " << name);
             CHECK(test::disagreements_with_brute_force(*a, m, test::nasty_rays(a->tree(), name == "bunny" ? 600 : 2000, 21)) == 0);
         }
+}
+
+TEST_CASE("ch08 PLOC: one round's nearest neighbours (the figure's step) as the plain loop finds them", "[ch08]") {
+    pcg32 g(8, 3);
+    std::vector<aabb> boxes;
+    for (int i = 0; i < 300; ++i) {
+        const vec3 p(g.next_float() * 10.0f, g.next_float() * 10.0f, g.next_float());
+        boxes.push_back({p, p + vec3(0.2f + g.next_float(), 0.3f, 0.1f + g.next_float())});
+        if (i % 7 == 0) boxes.push_back(boxes.back());  // copies: ties broken by the order on pairs
+    }
+    for (const int r : {1, 2, 5, 16, 300}) {
+        const std::vector<std::uint32_t> nn = ploc_nearest_neighbours(boxes, r);
+        const std::vector<std::size_t> expected = plain_nearest(boxes, std::size_t(std::min(r, 256)));
+        REQUIRE(nn.size() == boxes.size());
+        std::size_t differ = 0;
+        for (std::size_t i = 0; i < nn.size(); ++i) differ += nn[i] != expected[i];
+        INFO("radius " << r);
+        CHECK(differ == 0);
+    }
+    CHECK_THROWS_AS(ploc_nearest_neighbours(std::vector<aabb>(1), 2), std::invalid_argument);
 }

@@ -2,8 +2,15 @@
 //   treelet.svg: ten primitives in three clusters, the middle one straddling the line where the Morton
 //   codes' highest bit flips; chapter 07's LBVH over them (lbvh_binary_tree), the root's treelet of five
 //   leaves (form_treelet, exercise 08.1) as the LBVH built it, and rewired into the topology of least SAH
-//   cost found by the subset DP (subset_costs, 08.2), with every node's surface area and both costs.
+//   cost found by the subset DP (subset_costs, 08.2), with every node's surface area and both costs;
+//   ploc.svg: one round of PLOC over fourteen boxes in the plane: their Morton order (chapter 07's codes,
+//   radix sorted, as build_ploc sorts them), each cluster's nearest neighbour within r = 2 positions
+//   along the curve (ploc_nearest_neighbours, the builder's own step 3a), the mutual pairs that merge,
+//   and the cluster list after the merge and compaction.
+#include "strahl/ch07/morton.hpp"
+#include "strahl/ch07/radix_sort.hpp"
 #include "strahl/ch08/binary_tree.hpp"
+#include "strahl/ch08/ploc.hpp"
 #include "strahl/ch08/treelet.hpp"
 #include "strahl/diagram.hpp"
 #include <algorithm>
@@ -163,10 +170,91 @@ diagram treelet_figure() {
     return d;
 }
 
+diagram ploc_figure() {
+    // Fourteen boxes in the plane (z from 0 to 0.1), loosely in three groups.
+    const float at[14][2] = {{0.5f, 0.6f}, {1.6f, 0.9f}, {1.0f, 2.0f}, {2.4f, 2.3f}, {0.4f, 3.4f}, {1.3f, 4.4f},
+                             {2.6f, 4.0f}, {5.2f, 0.8f}, {6.4f, 1.5f}, {5.6f, 2.6f}, {6.9f, 3.3f}, {4.4f, 4.6f},
+                             {5.8f, 4.4f}, {6.8f, 5.0f}};
+    std::vector<aabb> boxes;
+    std::vector<vec3> centroids;
+    for (const auto& p : at) {
+        boxes.push_back({vec3(p[0], p[1], 0.0f), vec3(p[0] + 0.6f, p[1] + 0.45f, 0.1f)});
+        centroids.push_back(boxes.back().centroid());
+    }
+    // Step 1 of build_ploc: Morton codes of the centroids, radix sorted.
+    ch07::morton_codes codes = ch07::compute_morton_codes(boxes, centroids, 10);
+    ch07::radix_sort_params sort;
+    sort.key_bits = 30;
+    ch07::radix_sort(codes.keys, codes.ids, sort);
+    std::vector<aabb> ordered;
+    for (const std::uint32_t id : codes.ids) ordered.push_back(boxes[id]);
+    const int m = int(ordered.size()), radius = 2;
+    const std::vector<std::uint32_t> nn = ploc_nearest_neighbours(ordered, radius);
+    const auto mutual = [&](int i) { return int(nn[std::size_t(nn[std::size_t(i)])]) == i; };
+    const char* colours[] = {ink::blue, ink::red, ink::green, ink::orange, ink::purple};
+    std::vector<int> pair_colour(std::size_t(m), -1);
+    int pairs = 0;
+    for (int i = 0; i < m; ++i)
+        if (mutual(i) && i < int(nn[std::size_t(i)])) pair_colour[std::size_t(i)] = pair_colour[nn[std::size_t(i)]] = pairs++ % 5;
+
+    diagram d(1100, 500);
+    const font title{15, "middle", ink::black, true}, body{13, "middle"};
+    d.text(550, 24, "One round of PLOC: nearest neighbours within r = 2 positions along the Morton curve", title);
+    // Left: the boxes in the plane, numbered in curve order, the curve, the pairs that merge.
+    d.view(0.0, 0.2, 7.8, 5.8, 20, 50, 420, 360);
+    std::vector<point2> curve;
+    for (const aabb& b : ordered) curve.push_back({b.centroid().x, b.centroid().y});
+    for (std::size_t k = 1; k < curve.size(); ++k)
+        d.line(curve[k - 1].x, curve[k - 1].y, curve[k].x, curve[k].y, {ink::grey, "none", 1.2, true});
+    for (int i = 0; i < m; ++i) {
+        const aabb& b = ordered[std::size_t(i)];
+        const int c = pair_colour[std::size_t(i)];
+        d.rect(b.min.x, b.min.y, b.max.x, b.max.y, {c < 0 ? ink::black : colours[c], c < 0 ? ink::pale_grey : "white", 1.5});
+        d.text(b.centroid().x, b.centroid().y - 0.09, std::to_string(i), {12, "middle", ink::black, true});
+        if (c >= 0 && i < int(nn[std::size_t(i)])) {
+            const aabb u = unite(b, ordered[nn[std::size_t(i)]]);
+            d.rect(u.min.x - 0.08, u.min.y - 0.08, u.max.x + 0.08, u.max.y + 0.08, {colours[c], "none", 1.5, true});
+        }
+    }
+    d.pixels();
+    d.text(230, 435, "boxes numbered along the Morton curve (dashed);", body);
+    d.text(230, 452, "dashed frames: the pairs that merge this round", body);
+
+    // Right: the cluster list, each position's nearest neighbour as an arrow, then the list after.
+    const double left = 480, cell = 42, row1 = 200, row2 = 360;
+    d.text(left + cell * m / 2, row1 - 120, "the cluster list in curve order: each looks 2 positions either way", body);
+    for (int i = 0; i < m; ++i) {
+        const double x = left + cell * i;
+        const int c = pair_colour[std::size_t(i)];
+        d.rect(x, row1, x + cell - 4, row1 + 30, {c < 0 ? ink::black : colours[c], c < 0 ? ink::pale_grey : "white", 1.5});
+        d.text(x + cell / 2 - 2, row1 + 20, std::to_string(i), {13, "middle", ink::black, true});
+        const double xj = left + cell * nn[std::size_t(i)];
+        const bool right = nn[std::size_t(i)] > std::uint32_t(i);
+        d.arrow(x + cell / 2 - 2 + (right ? 4 : -4), row1 - 2, xj + cell / 2 - 2 + (right ? -4 : 4), row1 - 2,
+                {c < 0 ? ink::grey : colours[c], "none", 1.4}, right ? 28.0 : -28.0);
+    }
+    d.text(left + cell * m / 2, row1 + 55, "an arrow: the neighbour whose box with it has the least surface area;", body);
+    d.text(left + cell * m / 2, row1 + 72, "two arrows between one pair (mutual): the pair merges into one cluster", body);
+    // After: merged pairs as one cluster at the lower position, the rest in order (compaction).
+    int out = 0;
+    for (int i = 0; i < m; ++i) {
+        const int j = int(nn[std::size_t(i)]);
+        if (mutual(i) && j < i) continue;
+        const double x = left + cell * out++;
+        const int c = pair_colour[std::size_t(i)];
+        const std::string label = c >= 0 ? std::to_string(i) + "+" + std::to_string(j) : std::to_string(i);
+        d.rect(x, row2, x + cell - 4, row2 + 30, {c < 0 ? ink::black : colours[c], c < 0 ? ink::pale_grey : "white", 1.5});
+        d.text(x + cell / 2 - 2, row2 + 20, label, {c >= 0 ? 11.0 : 13.0, "middle", ink::black, true});
+    }
+    d.text(left + cell * m / 2, row2 + 55, std::to_string(m) + " clusters become " + std::to_string(out) +
+                                               ", still in curve order; the next round searches again", body);
+    return d;
+}
+
 }  // namespace
 
 std::vector<std::filesystem::path> write_diagrams(const std::filesystem::path& folder, bool force) {
-    return write_figures(folder, force, {{"treelet.svg", treelet_figure}});
+    return write_figures(folder, force, {{"treelet.svg", treelet_figure}, {"ploc.svg", ploc_figure}});
 }
 
 }  // namespace strahl::ch08

@@ -116,6 +116,16 @@ void nearest_neighbours(const clusters& c, std::size_t begin, std::size_t end, s
 
 }  // namespace
 
+std::vector<std::uint32_t> ploc_nearest_neighbours(std::span<const aabb> boxes, int radius) {
+    if (boxes.size() < 2) throw std::invalid_argument("ploc_nearest_neighbours: fewer than two clusters");
+    clusters c;
+    c.resize(boxes.size());
+    for (std::size_t i = 0; i < boxes.size(); ++i) c.set(i, std::uint32_t(i), boxes[i]);
+    std::vector<std::uint32_t> nn(boxes.size(), 0);
+    nearest_neighbours(c, 0, boxes.size(), std::size_t(std::clamp(radius, 1, 256)), nn);
+    return nn;
+}
+
 std::string to_string(const ploc_params& p) {
     return "ploc" + std::to_string(p.radius) + (p.bits_per_axis == 21 ? "-63" : "");
 }

@@ -55,4 +55,9 @@ struct ploc_report {
 binary_tree build_ploc(std::span<const aabb> boxes, std::span<const vec3> centroids, const ploc_params& p = {},
                        ploc_report* report = nullptr);
 
+// Step 3a alone, as build_ploc runs it: for clusters whose boxes are listed in the curve's order, each
+// position's nearest neighbour within `radius` positions (radius clamped to [1, 256]; the list at least 2
+// long). The chapter's figure shows one round with it.
+std::vector<std::uint32_t> ploc_nearest_neighbours(std::span<const aabb> boxes, int radius);
+
 }  // namespace strahl::ch08
