@@ -11,7 +11,7 @@ namespace strahl::ch01 {
 // half-width aspect() times that.
 // Why: why is the horizontal offset scaled by the aspect ratio and the vertical one not: which field of view
 // does tan_half_fov() describe?
-// Step by step: README.md, Hints 01.1.
+// Step by step: HINTS.md, 01.1.
 ray primary_ray(const camera& cam, float x, float y) {
     STRAHL_TODO("01.1 camera ray");
 }

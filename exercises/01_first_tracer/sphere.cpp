@@ -12,7 +12,7 @@ namespace strahl::ch01 {
 // closest point from the centre (f = org - center), not as b^2 - a c.
 // Why: why does b^2 - a c lose every digit for a small sphere far away, and why does the root pair c / q,
 // q / a never subtract two nearly equal numbers?
-// Step by step: README.md, Hints 01.2.
+// Step by step: HINTS.md, 01.2.
 bool intersect_sphere(const ray& r, const vec3& center, float radius, float& t) {
     STRAHL_TODO("01.2 ray/sphere");
 }

@@ -12,7 +12,7 @@ namespace strahl::ch01 {
 // Hint: Moeller-Trumbore needs two cross products (d x e2 and s x e1) and four dot products, each dot
 // product divided by one determinant.
 // Why: why would the paper's test |det| < 1e-6 punch holes into the bunny but not into the Cornell box?
-// Step by step: README.md, Hints 01.3.
+// Step by step: HINTS.md, 01.3.
 bool intersect_triangle(const ray& r, const vec3& v0, const vec3& v1, const vec3& v2, float& t, float& u,
                         float& v) {
     STRAHL_TODO("01.3 ray/triangle");

@@ -12,7 +12,7 @@ namespace strahl::ch01 {
 // Hint: a light on the far side of the surface (wi against s.n) gets no shadow ray at all.
 // Why: why does a rough mirror that sees another mirror cost about S^2 rays per pixel, and what does each of
 // those rays cost in chapter 01's world?
-// Step by step: README.md, Hints 01.4.
+// Step by step: HINTS.md, 01.4.
 color trace(const world& w, const ray& r, int depth, trace_context& ctx) {
     STRAHL_TODO("01.4 Whitted shading");
 }

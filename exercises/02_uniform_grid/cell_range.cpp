@@ -11,7 +11,7 @@ namespace strahl::ch02 {
 // Hint: clamp the float that floor() gives before converting it to int: converting a NaN or a float
 // beyond int's range is undefined behaviour.
 // Why: why can a box lying inside the grid box still give the cell index g.res[a] on its upper face?
-// Step by step: README.md, Hints 02.1.
+// Step by step: HINTS.md, 02.1.
 cell_range cells_of_box(const grid_dims& g, const aabb& b) {
     STRAHL_TODO("02.1 cell range");
 }

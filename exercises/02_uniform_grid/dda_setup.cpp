@@ -12,7 +12,7 @@ namespace strahl::ch02 {
 // no division at all.
 // Why: why is t_delta the same for every cell along an axis, and what does that spare the walk compared
 // with intersecting the ray with each cell's box?
-// Step by step: README.md, Hints 02.2.
+// Step by step: HINTS.md, 02.2.
 dda_state dda_setup(const grid_dims& g, const ray& r, float t_enter) {
     STRAHL_TODO("02.2 DDA set-up");
 }

@@ -10,7 +10,7 @@ namespace strahl::ch02 {
 // Hint: the next cell lies across the boundary the ray meets first: the axis with the smallest s.t_max.
 // Why: a ray through a cell edge ties two axes and so visits one of two cells it only touches; why does
 // neither choice lose a hit (think of the padding of the boxes at insertion), and why fix one all the same?
-// Step by step: README.md, Hints 02.3.
+// Step by step: HINTS.md, 02.3.
 bool dda_step(const grid_dims& g, dda_state& s) {
     STRAHL_TODO("02.3 DDA step");
 }

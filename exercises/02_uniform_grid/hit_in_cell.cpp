@@ -11,7 +11,7 @@ namespace strahl::ch02 {
 // Hint: written as that one comparison, every NaN already makes it false.
 // Why: why is a hit exactly at the exit not enough to stop (a triangle of the next cell may tie in t, with
 // a lower id), and why is walking one cell too far harmless while stopping one cell early is wrong?
-// Step by step: README.md, Hints 02.4.
+// Step by step: HINTS.md, 02.4.
 bool hit_in_cell(float t_end, float t_cell_exit) {
     STRAHL_TODO("02.4 hit in cell");
 }

@@ -10,7 +10,7 @@ namespace strahl::ch03 {
 // from one side counts as that side; straddling it: both (one more reference).
 // Hint: test the planar case first: a planar box passes both "max <= pos" and "min >= pos".
 // Why: why must these decisions agree exactly with the counts N_L, N_R and N_P of the event sweep (03.1)?
-// Step by step: README.md, Hints 03.2.
+// Step by step: HINTS.md, 03.2.
 side classify(const aabb& b, int axis, float pos, bool planar_left) {
     STRAHL_TODO("03.2 classify");
 }

@@ -12,7 +12,7 @@ namespace strahl::ch03 {
 // lying in the plane visits both children (left first) with the whole [t0, t1].
 // Why: why widen the crossing by slack instead of cutting [t0, t1] exactly at t_split: what could a
 // triangle lying in the split plane, or a rounded t_split, make the walk miss?
-// Step by step: README.md, Hints 03.3.
+// Step by step: HINTS.md, 03.3.
 child_visit near_far(const ray& r, const vec3& inv_dir, int axis, float split, float t0, float t1, float slack) {
     STRAHL_TODO("03.3 near/far and t-split");
 }

@@ -11,7 +11,7 @@ namespace strahl::ch03 {
 // times (1 - empty_bonus) when n_left or n_right is 0. A box of zero surface area: inf.
 // Hint: the children are copies of box, the left with max[axis] = pos, the right with min[axis] = pos.
 // Why: why give a split with an empty child a bonus, when the formula already charges that child nothing?
-// Step by step: README.md, Hints 03.1.
+// Step by step: HINTS.md, 03.1.
 float split_cost(const aabb& box, int axis, float pos, std::size_t n_left, std::size_t n_right, const sah_params& p) {
     STRAHL_TODO("03.1 SAH event sweep");
 }
@@ -24,7 +24,7 @@ float split_cost(const aabb& box, int axis, float pos, std::size_t n_left, std::
 // lying there leave N_R before the cost is taken, those lying or starting there join N_L after.
 // Why: why does one sweep over sorted events price all the candidate planes in linear time, where counting
 // the triangles on each side of each plane afresh would take quadratic time?
-// Step by step: README.md, Hints 03.1.
+// Step by step: HINTS.md, 03.1.
 split_candidate sah_sweep(std::span<const event> events, int axis, const aabb& box, std::size_t n,
                           const sah_params& p) {
     STRAHL_TODO("03.1 SAH event sweep");

@@ -14,7 +14,7 @@ namespace strahl::ch04 {
 // further down.
 // Why: a closest-hit leaf test shrinks the ray's tmax, which box_hit reads. Why does visiting the near
 // child first make later box tests fail more often, and why must the walk still not stop at the first hit?
-// Step by step: README.md, Hints 04.3.
+// Step by step: HINTS.md, 04.3.
 std::uint32_t near_first_traversal(const bvh& tree, const vec3& dir, box_hit_test box_hit, leaf_visit leaf) {
     STRAHL_TODO("04.3 near-first traversal");
 }

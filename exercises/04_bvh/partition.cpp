@@ -13,7 +13,7 @@ namespace strahl::ch04 {
 // equal centroids still have one order.
 // Why: why must a split never leave one side empty, and why does splitting equal centroids in half keep the
 // tree's depth at log2 of the count?
-// Step by step: README.md, Hints 04.2.
+// Step by step: HINTS.md, 04.2.
 split_result partition_split(std::span<std::uint32_t> ids, std::span<const vec3> centroids, split_method m) {
     STRAHL_TODO("04.2 partition");
 }

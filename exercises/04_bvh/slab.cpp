@@ -13,7 +13,7 @@ namespace strahl::ch04 {
 // the ray then runs inside the closed slab, so the axis can be skipped.
 // Why: the exit is widened, not the entry; why is widening one side enough, and why must a negative exit
 // move towards zero to be widened?
-// Step by step: README.md, Hints 04.1.
+// Step by step: HINTS.md, 04.1.
 bool slab_test(const aabb& box, const vec3& org, const vec3& inv_dir, float tmin, float tmax) {
     STRAHL_TODO("04.1 slab test");
 }

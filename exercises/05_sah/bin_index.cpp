@@ -10,7 +10,7 @@ namespace strahl::ch05 {
 // Hint: clamp the float, then convert it, never the other way round.
 // Why: why can a centroid inside [lo, hi] land in bin k, and why is converting first and clamping afterwards
 // undefined behaviour rather than merely wrong?
-// Step by step: README.md, Hints 05.2.
+// Step by step: HINTS.md, 05.2.
 int bin_index(const bin_mapping& m, float c) {
     STRAHL_TODO("05.2 bin assignment");
 }

@@ -11,7 +11,7 @@ namespace strahl::ch05 {
 // Hint: one line; convert the counts to float before multiplying.
 // Why: why is A(L) / A(P) the chance that a ray through P also meets L, and what does that assume about
 // the rays?
-// Step by step: README.md, Hints 05.1.
+// Step by step: HINTS.md, 05.1.
 float split_cost(const sah_costs& c, float area_parent, float area_left, std::size_t n_left, float area_right,
                  std::size_t n_right) {
     STRAHL_TODO("05.1 SAH cost of a split");

@@ -12,7 +12,7 @@ namespace strahl::ch05 {
 // left grows the left box and count and prices each boundary once.
 // Why: why do two sweeps of k steps suffice where pricing each boundary from scratch takes k^2 box unions,
 // and why does this step's cost depend on k and not on the number of triangles?
-// Step by step: README.md, Hints 05.3.
+// Step by step: HINTS.md, 05.3.
 bin_split best_boundary(std::span<const bin> bins, std::span<float> right_area, const sah_costs& c,
                         float area_parent) {
     STRAHL_TODO("05.3 prefix and suffix sweeps");

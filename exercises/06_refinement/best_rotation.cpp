@@ -11,7 +11,7 @@ namespace strahl::ch06 {
 // Hint: applying is two replace_child calls, then a refit of the changed child before one of n.
 // Why: why does a pass visit the nodes bottom up (children before parents), and why must repeated passes
 // of such strictly improving rotations stop?
-// Step by step: README.md, Hints 06.2.
+// Step by step: HINTS.md, 06.2.
 rotation_choice apply_best_rotation(refine_tree& t, std::uint32_t n, int depth, int max_depth, float c_traversal) {
     STRAHL_TODO("06.2 best rotation");
 }

@@ -10,7 +10,7 @@ namespace strahl::ch06 {
 // C_T times the changed child's new area minus its old one.
 // Hint: the README's table names, for each rotation, the changed child and its new box.
 // Why: why does no other node's area change: what happens to the box of N and to those of its ancestors?
-// Step by step: README.md, Hints 06.1.
+// Step by step: HINTS.md, 06.1.
 float rotation_cost(const refine_tree& t, std::uint32_t n, rotation r, float c_traversal) {
     STRAHL_TODO("06.1 rotation cost");
 }

@@ -10,7 +10,7 @@ namespace strahl::ch07 {
 // leave (e.g. after s = 16: bits 0-7 where they were, bits 8-9 moved up to 24-25) and read the mask off.
 // expand_bits21 in morton.hpp does the same for 21 bits in five steps.
 // Why interleave the bits at all: what do two codes sharing their first 3m bits say about the two points?
-// Step by step: README.md, Hints 07.1.
+// Step by step: HINTS.md, 07.1.
 std::uint32_t expand_bits10(std::uint32_t v) {
     STRAHL_TODO("07.1 the bit expansion");
 }

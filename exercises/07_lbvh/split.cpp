@@ -11,7 +11,7 @@ namespace strahl::ch07 {
 // Hint: binary search with a step that halves (rounding up) each round, starting at first: move to
 // first + step whenever that index is below last and still shares the longer prefix.
 // Why does a binary search work here: what does sorting say about where the differing bit flips?
-// Step by step: README.md, Hints 07.3.
+// Step by step: HINTS.md, 07.3.
 std::uint32_t find_split(std::span<const std::uint64_t> codes, std::uint32_t first, std::uint32_t last) {
     STRAHL_TODO("07.3 the split search");
 }

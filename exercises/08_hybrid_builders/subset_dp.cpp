@@ -13,7 +13,7 @@ namespace strahl::ch08 {
 // Hint: the proper subsets of S, largest first: P = (S - 1) & S, then P = (P - 1) & S, until P == 0.
 // Why: why can the masks be taken in increasing numeric order, and why does the cost of a subtree over S
 // not depend on how the trees over P and S ^ P look inside?
-// Step by step: README.md, Hints 08.2.
+// Step by step: HINTS.md, 08.2.
 optimal_topology subset_costs(std::span<const aabb> leaf_boxes, std::span<const float> leaf_costs,
                               const ch05::sah_costs& c) {
     STRAHL_TODO("08.2 the subset DP");

@@ -13,7 +13,7 @@ namespace strahl::ch08 {
 // Hint: a linear scan over the (at most 16) leaves finds the largest; skip the leaves of t.
 // Why: why expand the largest leaf first: which nodes does the SAH weigh most, and what could the DP do
 // with a treelet whose leaves are tiny?
-// Step by step: README.md, Hints 08.1.
+// Step by step: HINTS.md, 08.1.
 treelet form_treelet(const binary_tree& t, std::uint32_t root, int n_leaves) {
     STRAHL_TODO("08.1 forming a treelet");
 }

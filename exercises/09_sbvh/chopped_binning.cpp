@@ -13,7 +13,7 @@ namespace strahl::ch09 {
 // Hint: aabb::grow with an empty box changes nothing, but test is_empty() anyway: it says what you mean.
 // Why: why entries and exits, not one count per bin: at a boundary, which references belong to the left
 // child, which to the right, and which to both?
-// Step by step: README.md, Hints 09.2.
+// Step by step: HINTS.md, 09.2.
 void chopped_binning(std::span<const reference> refs, int axis, const ch05::bin_mapping& m,
                      std::span<chopped_bin> bins, slab_clipper clip) {
     STRAHL_TODO("09.2 chopped binning");

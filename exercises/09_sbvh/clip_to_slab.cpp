@@ -15,7 +15,7 @@ namespace strahl::ch09 {
 // that it contains the exact part; a corner on a plane is inside.
 // Why: why clip the triangle rather than its box: draw a long thin diagonal triangle, cut its box in two,
 // and compare the two halves' boxes with the boxes of the triangle's two parts.
-// Step by step: README.md, Hints 09.1.
+// Step by step: HINTS.md, 09.1.
 aabb clip_to_slab(const triangle& t, int axis, float lo, float hi, const aabb& box) {
     STRAHL_TODO("09.1 clip a triangle to a slab");
 }

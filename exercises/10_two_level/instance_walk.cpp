@@ -34,7 +34,7 @@ void two_level::visit(std::uint32_t k, ray& r, hit& best, Stats& stats) const {
 // Hint: any() in two_level.cpp is the same walk for the any-hit query.
 // Why: the top level's leaves hold instances, not triangles: what in fast_traverse lets a hit found in
 // one instance skip the boxes of instances behind it?
-// Step by step: README.md, Hints 10.3.
+// Step by step: HINTS.md, 10.3.
 template <class Stats>
 hit two_level::closest(const ray& query, Stats& stats) const {
     STRAHL_TODO("10.3 the two-level walk");

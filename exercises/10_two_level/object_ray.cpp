@@ -9,7 +9,7 @@ namespace strahl::ch10 {
 // Hint: affine has point() (with the translation) and vector() (without it); which one fits a direction?
 // Why: why may the direction not be normalised after the transform, and why does a hit's t then need no
 // conversion back to world space?
-// Step by step: README.md, Hints 10.1.
+// Step by step: HINTS.md, 10.1.
 ray to_object(const ray& r, const affine& to_object) {
     STRAHL_TODO("10.1 the ray's object-space transform");
 }

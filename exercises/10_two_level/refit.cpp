@@ -10,7 +10,7 @@ namespace strahl::ch10 {
 // Hint: one loop over the node array, from the last node to the first.
 // Why: why does that order see every child before its parent, and why may a refit tree trace slower than
 // a rebuilt one although every box is tight?
-// Step by step: README.md, Hints 10.2.
+// Step by step: HINTS.md, 10.2.
 void refit(ch04::bvh& tree, std::span<const aabb> boxes) {
     STRAHL_TODO("10.2 refit");
 }
