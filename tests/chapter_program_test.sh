@@ -154,6 +154,29 @@ for f in "${files[@]}"; do
     [[ -z $bad ]] || fail "$f: rays differing from brute force in: $bad"
 done
 
+# The measured tables end each row with the machine (strahl/machine.hpp: cpu,threads,kernels,date); the tables
+# of counts, the same on any machine, do not.
+case $nn in
+01) stamped=(renders.csv) ;; 02) stamped=(scenes.csv insertion.csv lambda_sweep.csv) ;;
+03 | 04) stamped=(runs.csv) ;; 05) stamped=(bins.csv) ;; 06) stamped=(refinement.csv) ;;
+07) stamped=(build_phases.csv quality.csv sort.csv scaling.csv) ;; 08) stamped=(builders.csv) ;;
+09) stamped=(compare.csv alpha.csv) ;; 10) stamped=(animation.csv breakeven.csv big.csv) ;;
+11) stamped=(steps.csv render.csv) ;; 12) stamped=(packets.csv) ;; 13) stamped=(wide.csv) ;;
+14) stamped=(sweep.csv flight.csv) ;; 15) stamped=(escapes.csv scale.csv table.csv) ;; *) stamped=() ;;
+esac
+for f in "${files[@]}"; do
+    [[ $f == *.csv && -f $out/$f ]] || continue
+    want=no
+    for g in "${stamped[@]}"; do [[ $g != "$f" ]] || want=yes; done
+    if [[ $want == yes ]]; then
+        head -n 1 "$out/$f" | grep -q ',cpu,threads,kernels,date$' || fail "$f: no machine columns in its header"
+        bad=$(awk -F, 'NR > 1 && NF > 4 && ($(NF-3) == "" || $(NF-2) < 1 || $NF !~ /^[0-9][0-9][0-9][0-9]-[0-9][0-9]-[0-9][0-9]$/)' "$out/$f")
+        [[ -z $bad ]] || fail "$f: rows without a machine: $bad"
+    else
+        ! head -n 1 "$out/$f" | grep -q ',cpu,threads,kernels,date$' || fail "$f: machine columns on a table of counts"
+    fi
+done
+
 # Chapter 01's --sweep: a row per mesh size, tests per ray equal to the primitive count, a plot.
 if [[ $nn == 01 ]]; then
     runs "--sweep" 0 "$program" --sweep --quick --out "$dir/sweep/"
@@ -212,17 +235,22 @@ if [[ $nn == 05 || $nn == 06 || $nn == 10 ]]; then
     article=a
     [[ $table != animation.csv ]] || article=an
     contains "$dir/err" "is not $article $table written by ch$nn" "--replot of a foreign file"
-    { head -n 1 "$out/$table"; head -n 2 "$out/$table" | tail -n 1 | sed 's/,[^,]*$/,nan/'; } >"$dir/nan.csv"
+    # The table without its machine columns (an older file's form, which --replot reads too), so that its
+    # last field is a number.
+    awk -F, -v OFS=, 'NR == 1 { for (i = 1; i <= NF; ++i) if ($i == "cpu") c = i } { if (c) NF = c - 1; print }' \
+        "$out/$table" >"$dir/plain.csv"
+    runs "--replot of a table without machine columns" 0 "$program" --replot "$dir/plain.csv" --out "$dir/replot7"
+    { head -n 1 "$dir/plain.csv"; head -n 2 "$dir/plain.csv" | tail -n 1 | sed 's/,[^,]*$/,nan/'; } >"$dir/nan.csv"
     runs "--replot of a NaN" 1 "$program" --replot "$dir/nan.csv" --out "$dir/replot3"
     contains "$dir/err" "line 2: 'nan' is not a number" "--replot of a NaN"
     # A subnormal is a number; one beyond double's range is out of range, not "not a number".
-    { head -n 1 "$out/$table"; head -n 2 "$out/$table" | tail -n 1 | sed 's/,[^,]*$/,4e-320/'; } >"$dir/tiny.csv"
+    { head -n 1 "$dir/plain.csv"; head -n 2 "$dir/plain.csv" | tail -n 1 | sed 's/,[^,]*$/,4e-320/'; } >"$dir/tiny.csv"
     runs "--replot of a subnormal" 0 "$program" --replot "$dir/tiny.csv" --out "$dir/replot5"
-    { head -n 1 "$out/$table"; head -n 2 "$out/$table" | tail -n 1 | sed 's/,[^,]*$/,1e999/'; } >"$dir/huge.csv"
+    { head -n 1 "$dir/plain.csv"; head -n 2 "$dir/plain.csv" | tail -n 1 | sed 's/,[^,]*$/,1e999/'; } >"$dir/huge.csv"
     runs "--replot of 1e999" 1 "$program" --replot "$dir/huge.csv" --out "$dir/replot6"
     contains "$dir/err" "line 2: '1e999' is out of range" "--replot of 1e999"
     if [[ $nn == 06 ]]; then
-        { head -n 1 "$out/$table"; head -n 2 "$out/$table" | tail -n 1 | sed 's/^[^,]*,/..\/escape,/'; } >"$dir/path.csv"
+        { head -n 1 "$dir/plain.csv"; head -n 2 "$dir/plain.csv" | tail -n 1 | sed 's/^[^,]*,/..\/escape,/'; } >"$dir/path.csv"
         runs "--replot of a scene named like a path" 1 "$program" --replot "$dir/path.csv" --out "$dir/replot4"
         contains "$dir/err" "is no plain name" "--replot of a scene named like a path"
         [[ ! -e $dir/escape.svg && ! -e $dir/sah_vs_time_escape.svg ]] || fail "--replot wrote outside its folder"
@@ -268,7 +296,7 @@ if [[ $nn == 15 ]]; then
     # the run's plot again from its CSV, byte for byte, and refuses another CSV.
     rows=$(tail -n +2 "$out/scale.csv" | wc -l)
     [[ $rows -ge 235 && $((rows % 47)) -eq 0 ]] || fail "scale.csv has $rows rows, not 47 scales x 5 or more tests"
-    [[ $(head -n 1 "$out/scale.csv") == "scale,extent,coordinate,test,rays,hits,expected" ]] || fail "scale.csv's header"
+    [[ $(head -n 1 "$out/scale.csv") == "scale,extent,coordinate,test,rays,hits,expected,cpu,threads,kernels,date" ]] || fail "scale.csv's header"
     bad=$(awk -F, 'NR > 1 && $2 >= 1e-8 && $3 <= 1e12 && $4 != "mt-epsilon" && $6 != $7' "$out/scale.csv")
     [[ -z $bad ]] || fail "scale.csv: a test loses hits within the course's range: $bad"
     [[ $(awk -F, 'NR > 1 && $2 < 1e-8 && $4 == "mt" && $6 < $7' "$out/scale.csv" | wc -l) -gt 0 ]] ||

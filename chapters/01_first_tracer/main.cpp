@@ -2,6 +2,7 @@
 // teapot with brute-force Whitted ray tracing, and prints what it cost: rays by kind, rays per pixel,
 // Mrays/s, primitive tests per ray, also as tables (renders.csv; glossy.csv: the Cornell box's rays at 1 to 32
 // glossy samples). --sweep measures how that cost grows with the triangle count.
+#include "strahl/machine.hpp"
 #include "strahl/ch01/render.hpp"
 #include "strahl/parallel.hpp"
 #include "strahl/plot.hpp"
@@ -249,6 +250,8 @@ void sweep(const cli& args, bool quick, const output_plan& plan) {
     linear.dashed = true;
     p.series = {linear, measured};  // the measured line drawn over the reference
     write_svg(svg_path, to_svg(p));
+    csv.close();
+    stamp_machine(csv_path, parallel_threads());
     std::printf("  wrote    %s, %s\n", csv_path.string().c_str(), svg_path.string().c_str());
 }
 
@@ -336,6 +339,8 @@ int run(int argc, const char* const* argv) {
         std::ofstream csv(renders_csv);
         csv << renders_header << '\n';
         for (const render_row& r : rows) write_render_row(csv, r);
+        csv.close();
+        stamp_machine(renders_csv, parallel_threads());
         std::printf("  wrote    %s\n", renders_csv.string().c_str());
         for (const job& j : jobs)
             if (j.name == "cornell") glossy_table(j, args, glossy_csv);

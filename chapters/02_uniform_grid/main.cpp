@@ -3,6 +3,7 @@
 // ray, Mrays/s over plain triangles and over chapter 01's virtual objects (scenes.csv); box against exact
 // insertion (insertion.csv); the same teapot alone and in a stadium; and lambda swept against build time,
 // memory and rays/s (lambda_sweep.csv).
+#include "strahl/machine.hpp"
 #include "strahl/ch02/accel.hpp"
 #include "strahl/ch02/measure.hpp"
 #include "strahl/display.hpp"
@@ -189,6 +190,8 @@ void box_vs_exact(const context& ctx, const scene& s) {
                     c.per_ray(c.prim_tests), m->tr.mrays, m->occ.references_per_prim,
                     100.0 * double(m->occ.empty_cells) / double(m->occ.cells));
     }
+    csv.close();
+    stamp_machine(csv_path, parallel_threads());
     std::printf("  wrote    %s\n", csv_path.string().c_str());
 }
 
@@ -220,6 +223,8 @@ void lambda_sweep(const context& ctx, const scene& s, bool quick) {
     }
     p.series = {speed, build, mem, tests};
     write_svg(svg_path, to_svg(p));
+    csv.close();
+    stamp_machine(csv_path, parallel_threads());
     std::printf("  wrote    %s, %s\n", csv_path.string().c_str(), svg_path.string().c_str());
 }
 
@@ -273,6 +278,7 @@ int run(int argc, const char* const* argv) {
     render_scene(ctx, stadium, "stadium", opt, &occ_stadium, scenes, 4);
     stadium_from_outside(ctx, stadium, opt, 256);
     scenes.close();
+    stamp_machine(scenes_csv, parallel_threads());
     std::printf("  wrote    %s\n", scenes_csv.string().c_str());
 
     // What a ray meets: the share of the triangle references that sit in cells holding k triangles, k in

@@ -3,6 +3,7 @@
 // facing ratio), draws the first levels' split planes over the render, and prints per set: nodes, leaves,
 // depth, references per triangle, memory, build time, SAH cost, nodes and triangles tested per ray, Mrays/s,
 // and writes that table as runs.csv.
+#include "strahl/machine.hpp"
 #include "strahl/ch03/accel.hpp"
 #include "strahl/display.hpp"
 #include "strahl/image.hpp"
@@ -159,6 +160,7 @@ int run(int argc, const char* const* argv) {
     for (const std::string& name : names)
         if (const auto s = course_scene(name)) run_scene(*s, o, runs);
     runs.close();
+    stamp_machine(runs_path, parallel_threads());
     std::printf("wrote %s\n", runs_path.string().c_str());
     std::printf("against the uniform grid (chapter 02) and Embree, on the same rays:\n"
                 "  build/release/bin/race --quick --accels brute,ch02-grid,ch03-kd,ch03-kd-virtual,embree-medium\n");

@@ -3,6 +3,7 @@
 // build: nodes, leaves, depth, memory, build time, box and triangle tests per ray, Mrays/s, and writes that
 // table as runs.csv. Draws the lecture's picture of the AABB problem: box tests per pixel as a heat map
 // (rays grazing the surface pay most), with the boxes of chosen levels drawn over it.
+#include "strahl/machine.hpp"
 #include "strahl/ch02/accel.hpp"
 #include "strahl/ch03/accel.hpp"
 #include "strahl/ch04/accel.hpp"
@@ -167,6 +168,8 @@ void sweep(bool quick, const options& o) {
             false, nodes};
     plot ps{"Mrays/s, one thread", "triangles N", "Mrays/s", true, true, speed};
     write_svg(svg_path, to_svg(std::vector<plot>{pt, pn, ps}, 3, 420, 340));
+    csv.close();
+    stamp_machine(csv_path, parallel_threads());
     std::printf("  wrote    %s, %s\n", csv_path.string().c_str(), svg_path.string().c_str());
 }
 
@@ -225,6 +228,7 @@ int run(int argc, const char* const* argv) {
     for (const std::string& name : names)
         if (const auto s = course_scene(name)) run_scene(*s, o, runs);
     runs.close();
+    stamp_machine(runs_path, parallel_threads());
     std::printf("wrote %s\n", runs_path.string().c_str());
     std::printf("against the grid, the k-d tree and Embree, on the same rays:\n"
                 "  build/release/bin/race --quick --accels brute,ch02-grid,ch03-kd,ch04-median,ch04-spatial,"

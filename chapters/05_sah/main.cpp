@@ -2,6 +2,7 @@
 // BVHs with 4 to 256 bins over the teapot in a stadium, the bunny and Sponza (when the shared meshes are
 // there), traces the same primary and diffuse rays through each, and prints and plots the trade: build
 // time against SAH cost against Mrays/s. Every tree's hits are checked against the median tree's.
+#include "strahl/machine.hpp"
 #include "strahl/ch01/ray_sets.hpp"
 #include "strahl/ch05/accel.hpp"
 #include "strahl/image.hpp"
@@ -144,7 +145,7 @@ void write_table(const scene_rows& all, const fs::path& csv) {
 // --replot: the rows of a bins.csv this program wrote, scene by scene in the file's order.
 scene_rows read_table(const fs::path& csv) {
     scene_rows all;
-    for (const csv_row& r : read_csv(csv, csv_header, "a bins.csv written by ch05")) {
+    for (const csv_row& r : read_csv(csv, csv_header, machine_header, "a bins.csv written by ch05")) {
         const auto num = [&](std::size_t k) { return csv_number(csv, r, k); };
         variant v{r.cells[1], int(num(2))};
         v.build_ms = num(3), v.sah = num(4), v.nodes = std::size_t(num(5)), v.depth = int(num(6));
@@ -262,6 +263,7 @@ int run(int argc, const char* const* argv) {
     for (const std::string& name : names)
         if (const auto s = course_scene(name)) all.emplace_back(name, run_scene(*s, name, o));
     write_table(all, csv);
+    stamp_machine(csv, parallel_threads());
     write_plots(all, trade, cost);
     std::printf("wrote %s, %s, %s\n", csv.string().c_str(), trade.string().c_str(), cost.string().c_str());
     std::printf("against Embree on the same rays: build/release/bin/race --accels ch04-median,ch05-sweep,"

@@ -4,6 +4,7 @@
 // budgets, and prints and plots the trade: SAH cost against refinement time; then traces the same primary
 // and diffuse rays through each start tree and each fully refined tree (Mrays/s before and after). Every
 // tree's hits are checked against the median tree's.
+#include "strahl/machine.hpp"
 #include "strahl/ch01/primitive_sets.hpp"
 #include "strahl/ch01/ray_sets.hpp"
 #include "strahl/ch06/accel.hpp"
@@ -136,7 +137,7 @@ void write_table(const std::vector<row>& rows, const fs::path& csv) {
 // --replot: the rows of a refinement.csv this program wrote, in the file's order.
 std::vector<row> read_table(const fs::path& csv) {
     std::vector<row> rows;
-    for (const csv_row& c : read_csv(csv, csv_header, "a refinement.csv written by ch06")) {
+    for (const csv_row& c : read_csv(csv, csv_header, machine_header, "a refinement.csv written by ch06")) {
         const auto num = [&](std::size_t k) { return csv_number(csv, c, k); };
         // The scene names a plot file: letters, digits, '_' and '-' only (no '/', no "..").
         if (c.cells[0].empty() || c.cells[0].find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
@@ -243,6 +244,7 @@ int run(int argc, const char* const* argv) {
     for (const std::string& name : names)
         if (const auto s = course_scene(name)) add(name, *s);
     write_table(rows, csv);
+    stamp_machine(csv, parallel_threads());
     write_plots(rows, o.folder);
     std::printf("wrote %s", csv.string().c_str());
     for (const std::string& name : scenes_of(rows)) std::printf(", %s", plot_path(o.folder, name).string().c_str());

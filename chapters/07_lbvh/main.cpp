@@ -3,6 +3,7 @@
 // there), and measures: the build's phases at 1 and N threads; the trees' SAH cost and trace speed against
 // chapter 05's binned SAH tree on the same rays (every tree's hits checked against it); and the radix sort
 // against std::sort and tbb::parallel_sort on the same keys.
+#include "strahl/machine.hpp"
 #include "strahl/ch01/primitive_sets.hpp"
 #include "strahl/ch01/ray_sets.hpp"
 #include "strahl/ch05/accel.hpp"
@@ -203,7 +204,7 @@ void write_plots(const fs::path& phases_csv, const fs::path& quality_csv, const 
     bar_chart phases{"Where the 30-bit LBVH's build time goes", "share of the build [%]", {}, {}, {}, false};
     for (const char* n : phase_names) phases.series_labels.push_back(n);
     phases.values.resize(5);
-    for (const csv_row& r : read_csv(phases_csv, phases_header, "a build_phases.csv written by ch07")) {
+    for (const csv_row& r : read_csv(phases_csv, phases_header, machine_header, "a build_phases.csv written by ch07")) {
         if (r.cells[2] != "lbvh30") continue;
         const double total = csv_number(phases_csv, r, 9);
         double sum = 0;
@@ -218,7 +219,7 @@ void write_plots(const fs::path& phases_csv, const fs::path& quality_csv, const 
     std::vector<plot> panels;
     std::map<std::string, std::size_t> panel_of;
     std::vector<std::string> trees;
-    for (const csv_row& r : read_csv(quality_csv, quality_header, "a quality.csv written by ch07")) {
+    for (const csv_row& r : read_csv(quality_csv, quality_header, machine_header, "a quality.csv written by ch07")) {
         if (!panel_of.count(r.cells[0])) {
             panel_of[r.cells[0]] = panels.size();
             panels.push_back(plot{r.cells[0] + " (" + r.cells[1] + " triangles)", "build time, one thread [ms]",
@@ -236,14 +237,14 @@ void write_plots(const fs::path& phases_csv, const fs::path& quality_csv, const 
 
     bar_chart sorts{"Sorting the 30-bit Morton codes (with their ids)", "time per key [ns]", {}, {}, {}, false};
     std::map<std::string, std::size_t> series_of, category_of;
-    for (const csv_row& r : read_csv(sort_csv, sort_header, "a sort.csv written by ch07")) {
+    for (const csv_row& r : read_csv(sort_csv, sort_header, machine_header, "a sort.csv written by ch07")) {
         const std::string method = r.cells[2] + (r.cells[3] == "1" ? "" : ", " + r.cells[3] + " threads");
         const std::string scene = r.cells[0] + " (" + r.cells[1] + ")";
         if (!series_of.count(method)) series_of[method] = sorts.series_labels.size(), sorts.series_labels.push_back(method);
         if (!category_of.count(scene)) category_of[scene] = sorts.categories.size(), sorts.categories.push_back(scene);
     }
     sorts.values.assign(sorts.series_labels.size(), std::vector<double>(sorts.categories.size(), 0.0));
-    for (const csv_row& r : read_csv(sort_csv, sort_header, "a sort.csv written by ch07")) {
+    for (const csv_row& r : read_csv(sort_csv, sort_header, machine_header, "a sort.csv written by ch07")) {
         const std::string method = r.cells[2] + (r.cells[3] == "1" ? "" : ", " + r.cells[3] + " threads");
         const double keys = std::max(1.0, csv_number(sort_csv, r, 1));
         sorts.values[series_of[method]][category_of[r.cells[0] + " (" + r.cells[1] + ")"]] =
@@ -252,8 +253,9 @@ void write_plots(const fs::path& phases_csv, const fs::path& quality_csv, const 
     write_svg(out / "sort.svg", to_svg(sorts, 900, 440));
 }
 
-void write_file(const fs::path& path, const std::string& header, const std::ostringstream& rows) {
-    write_text(path, header + '\n' + rows.str());
+// A table with the machine's columns (the timings ran on up to `threads` threads).
+void write_file(const fs::path& path, const std::string& header, const std::ostringstream& rows, int threads) {
+    write_text(path, with_machine(header + '\n' + rows.str(), this_machine(threads)));
 }
 
 int run(int argc, const char* const* argv) {
@@ -298,9 +300,9 @@ int run(int argc, const char* const* argv) {
         const fs::path from = args.get("replot");
         for (const char* f : {"build_phases.csv", "quality.csv", "sort.csv"})
             if (!fs::is_regular_file(from / f)) throw usage_error("--replot: no " + (from / f).string());
-        read_csv(from / "build_phases.csv", phases_header, "a build_phases.csv written by ch07");
-        read_csv(from / "quality.csv", quality_header, "a quality.csv written by ch07");
-        read_csv(from / "sort.csv", sort_header, "a sort.csv written by ch07");
+        read_csv(from / "build_phases.csv", phases_header, machine_header, "a build_phases.csv written by ch07");
+        read_csv(from / "quality.csv", quality_header, machine_header, "a quality.csv written by ch07");
+        read_csv(from / "sort.csv", sort_header, machine_header, "a sort.csv written by ch07");
         for (const fs::path& p : svgs) prepare_output(p, user_named, args.has("force"));
         write_plots(from / "build_phases.csv", from / "quality.csv", from / "sort.csv", o.folder);
         std::printf("wrote %s, %s, %s from %s\n", svgs[0].string().c_str(), svgs[1].string().c_str(),
@@ -322,10 +324,10 @@ int run(int argc, const char* const* argv) {
         compare_quality(s.name, s, in, o, build_ms, quality);
         compare_sorts(s.name, in, o, sorts);
     }
-    write_file(phases_csv, phases_header, phases);
-    write_file(quality_csv, quality_header, quality);
-    write_file(sort_csv, sort_header, sorts);
-    write_file(scaling_csv, scaling_header, scaling);
+    write_file(phases_csv, phases_header, phases, o.threads);
+    write_file(quality_csv, quality_header, quality, o.threads);
+    write_file(sort_csv, sort_header, sorts, o.threads);
+    write_file(scaling_csv, scaling_header, scaling, o.threads);
     write_plots(phases_csv, quality_csv, sort_csv, o.folder);
     std::printf("wrote %s, %s, %s, %s and the plots %s, %s, %s\n", phases_csv.string().c_str(),
                 quality_csv.string().c_str(), sort_csv.string().c_str(), scaling_csv.filename().string().c_str(), svgs[0].filename().string().c_str(), svgs[1].filename().string().c_str(),

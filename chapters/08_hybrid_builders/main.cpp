@@ -3,6 +3,7 @@
 // binned SAH tree and chapter 07's LBVH, and measures each one's build time at 1 and N threads, SAH cost
 // and trace speed on one thread (every tree's hits checked against chapter 05's). With --from-race it
 // draws instead the build/trace trade of a race's every BVH builder and Embree, and its Pareto frontier.
+#include "strahl/machine.hpp"
 #include "strahl/ch01/ray_sets.hpp"
 #include "strahl/ch05/accel.hpp"
 #include "strahl/ch07/builder_scenes.hpp"
@@ -133,7 +134,7 @@ int run(int argc, const char* const* argv) {
     const std::vector<scene> scenes = ch07::builder_scenes(which);
     std::ostringstream rows;
     for (const scene& s : scenes) compare(s, o, rows);
-    write_text(csv_path, std::string(builders_header) + "\n" + rows.str());
+    write_text(csv_path, with_machine(std::string(builders_header) + "\n" + rows.str(), this_machine(o.threads)));
     std::printf("wrote %s\n", csv_path.string().c_str());
     return 0;
 }

@@ -3,6 +3,8 @@
 // chapter 03's k-d tree: SAH cost, references per triangle, memory, build time and the trace speed of
 // chapter 05's fast walk on one thread (every structure's hits checked against the binned tree's); then
 // the overlap threshold alpha swept from 1 (no spatial split) to 0, as alpha.csv and alpha.svg.
+#include "strahl/machine.hpp"
+#include "strahl/parallel.hpp"
 #include "strahl/ch01/ray_sets.hpp"
 #include "strahl/ch03/accel.hpp"
 #include "strahl/ch05/accel.hpp"
@@ -236,7 +238,7 @@ int run(int argc, const char* const* argv) {
     if (user_named) folder = args.get("out");
     if (args.has("replot")) {
         const fs::path csv = args.get("replot");
-        const std::string svg = alpha_svg(read_csv(csv, alpha_header, "an alpha.csv written by ch09"), csv);
+        const std::string svg = alpha_svg(read_csv(csv, alpha_header, machine_header, "an alpha.csv written by ch09"), csv);
         prepare_output(folder / "alpha.svg", user_named, force);
         write_svg(folder / "alpha.svg", svg);
         std::printf("wrote %s\n", (folder / "alpha.svg").string().c_str());
@@ -284,15 +286,16 @@ int run(int argc, const char* const* argv) {
     std::ostringstream compare, sweep;
     if (!variants.empty()) {
         for (const scene& s : scenes) run_variants(s, o, variants, compare);
-        write_text(folder / "variants.csv", std::string(variants_header) + "\n" + compare.str());
+        write_text(folder / "variants.csv", with_machine(std::string(variants_header) + "\n" + compare.str(), this_machine(parallel_threads())));
         std::printf("wrote %s\n", (folder / "variants.csv").string().c_str());
         return 0;
     }
     for (const scene& s : scenes) run_scene(s, o, compare, sweep);
-    write_text(folder / "compare.csv", std::string(compare_header) + "\n" + compare.str());
-    const std::string alpha_csv = std::string(alpha_header) + "\n" + sweep.str();
+    const machine_columns here = this_machine(parallel_threads());
+    write_text(folder / "compare.csv", with_machine(std::string(compare_header) + "\n" + compare.str(), here));
+    const std::string alpha_csv = with_machine(std::string(alpha_header) + "\n" + sweep.str(), here);
     write_text(folder / "alpha.csv", alpha_csv);
-    write_svg(folder / "alpha.svg", alpha_svg(read_csv(folder / "alpha.csv", alpha_header, "an alpha.csv written by ch09"),
+    write_svg(folder / "alpha.svg", alpha_svg(read_csv(folder / "alpha.csv", alpha_header, machine_header, "an alpha.csv written by ch09"),
                                               folder / "alpha.csv"));
     for (const char* f : {"compare.csv", "alpha.csv", "alpha.svg"}) std::printf("wrote %s\n", (folder / f).string().c_str());
     return 0;

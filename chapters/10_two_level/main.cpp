@@ -6,6 +6,8 @@
 // the frame's primary rays, the twisting mesh's SAH cost; every two-level method's hits checked against the
 // rebuilt one's. Then a scene of many instances (10 million triangles and more), built and traced
 // instanced, its memory against its flattened copy's.
+#include "strahl/machine.hpp"
+#include "strahl/parallel.hpp"
 #include "strahl/ch01/ray_sets.hpp"
 #include "strahl/ch03/accel.hpp"
 #include "strahl/ch05/accel.hpp"
@@ -269,7 +271,7 @@ void big_scene(const triangle_mesh& mesh, const std::string& name, const options
 // --replot: animation.csv's rows, as run_animation wrote them.
 std::vector<frame_row> read_rows(const fs::path& file) {
     std::vector<frame_row> rows;
-    for (const csv_row& r : read_csv(file, "frame,method,update_ms,trace_ms,mrays_s,sah_cost,differing", "an animation.csv written by ch10"))
+    for (const csv_row& r : read_csv(file, "frame,method,update_ms,trace_ms,mrays_s,sah_cost,differing", machine_header, "an animation.csv written by ch10"))
         rows.push_back({int(csv_number(file, r, 0)), r.cells[1], csv_number(file, r, 2), csv_number(file, r, 3),
                         csv_number(file, r, 5), std::size_t(csv_number(file, r, 6))});
     return rows;
@@ -343,13 +345,16 @@ int run(int argc, const char* const* argv) {
     std::vector<frame_row> rows;
     csv << "frame,method,update_ms,trace_ms,mrays_s,sah_cost,differing\n";
     run_animation(anim, o, folder, csv, rows);
-    write_text(folder / "animation.csv", csv.str());
-    write_text(folder / "breakeven.csv", break_even(rows, std::size_t(o.width) * std::size_t(o.height)));
+    // The measured tables with the machine's columns; summary.csv, which --replot redraws from a committed
+    // animation.csv, without (the same bytes on any machine).
+    const machine_columns here = this_machine(parallel_threads());
+    write_text(folder / "animation.csv", with_machine(csv.str(), here));
+    write_text(folder / "breakeven.csv", with_machine(break_even(rows, std::size_t(o.width) * std::size_t(o.height)), here));
     write_text(folder / "summary.csv", summary(rows));
     plot_animation(rows, folder);
     big << "mesh,instances,triangles,build_ms,primary_mrays_s,hits,rays,instanced_mb,flattened_mb,ratio\n";
     big_scene(rigid, rigid_name, o, big);
-    write_text(folder / "big.csv", big.str());
+    write_text(folder / "big.csv", with_machine(big.str(), here));
     std::printf("wrote %s: animation.csv, breakeven.csv, summary.csv, big.csv, update_vs_trace.svg, sah_drift.svg, frames/\n", folder.string().c_str());
     return 0;
 }

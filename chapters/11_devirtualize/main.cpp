@@ -5,6 +5,7 @@
 // step's speed-up over the first. Then chapter 01's Whitted renderer with rough reflection on the Cornell
 // box with the bunny: virtual primitives and materials, a variant of both, triangles only with virtual
 // materials and with a switch; rays per second, the images compared bit for bit. Tables, CSV files, plots.
+#include "strahl/machine.hpp"
 #include "strahl/ch01/ray_sets.hpp"
 #include "strahl/ch05/accel.hpp"
 #include "strahl/ch11/step_report.hpp"
@@ -136,12 +137,12 @@ void write_outputs(const std::vector<step_row>& steps, const std::vector<render_
     for (const step_row& r : steps)
         csv << r.scene << ',' << r.step << ',' << r.memory_mib << ',' << r.primary << ',' << r.diffuse << ',' << r.shadow
             << ',' << r.differing << '\n';
-    write_text(folder / "steps.csv", csv.str());
+    write_text(folder / "steps.csv", with_machine(csv.str(), this_machine(parallel_threads())));
     std::ostringstream rcsv;
     rcsv << "renderer,mrays_s,rays,seconds,same_image\n";
     for (const render_row& r : renders)
         rcsv << r.renderer << ',' << r.mrays << ',' << r.rays << ',' << r.seconds << ',' << (r.same_image ? 1 : 0) << '\n';
-    write_text(folder / "render.csv", rcsv.str());
+    write_text(folder / "render.csv", with_machine(rcsv.str(), this_machine(parallel_threads())));
     write_staircase(steps, folder / "staircase.svg", "same tree, same rays, one thread");
 }
 

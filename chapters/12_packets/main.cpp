@@ -5,6 +5,7 @@
 // median of interleaved rounds), the lanes a packet keeps busy, nodes, boxes and triangles per ray. Every
 // packet tracer's answers are checked against chapter 13's. Two tables (packets.csv, lanes.csv), a plot, and
 // per scene a heat map of the busy lanes of the 16-lane wide walk.
+#include "strahl/machine.hpp"
 #include "strahl/ch01/ray_sets.hpp"
 #include "strahl/ch05/sah.hpp"
 #include "strahl/ch12/accel.hpp"
@@ -309,8 +310,8 @@ void write_tables(const std::vector<row>& rows, const fs::path& packets_csv, con
         for (std::size_t k = 0; k < r.share.size(); ++k)
             l << r.scene << ',' << r.rays << ',' << r.tracer << ',' << k << ',' << r.share[k] << '\n';
     }
-    write_text(packets_csv, p.str());
-    write_text(lanes_csv, l.str());
+    write_text(packets_csv, with_machine(p.str(), this_machine(parallel_threads())));
+    write_text(lanes_csv, l.str());  // counts only: the same on any machine
 }
 
 // Each packet tracer's speed over chapter 13's faster single-ray row on the same rays: one group of bars per

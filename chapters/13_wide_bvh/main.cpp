@@ -3,6 +3,7 @@
 // blocks of 4 or 8 triangles), on the teapot in a stadium, the bunny and Sponza (when the shared meshes are
 // there): primary, diffuse and shadow rays on one thread, Mrays/s, nodes, boxes and triangle lanes per ray,
 // memory. Every tree's answers are checked against the binary tree's. A table, a CSV file and a plot.
+#include "strahl/machine.hpp"
 #include "strahl/ch01/ray_sets.hpp"
 #include "strahl/ch05/accel.hpp"
 #include "strahl/ch13/accel.hpp"
@@ -108,7 +109,7 @@ void write_table(const std::vector<row>& rows, const fs::path& csv) {
              << r.diffuse << ',' << r.shadow << ',' << r.nodes_per_ray << ',' << r.boxes_per_ray << ','
              << r.lanes_per_ray << ',' << r.differing << '\n';
     std::ofstream f(csv);
-    f << text.str();
+    f << with_machine(text.str(), this_machine(parallel_threads()));
     f.close();
     if (!f) throw std::runtime_error("cannot write " + csv.string());
 }

@@ -9,6 +9,7 @@
 // a camera flight through Sponza with a mirror floor (chapter 11's Whitted shading, all threads), each frame
 // rendered by the hybrid in packets, by chapter 13's tree and by Embree one ray at a time, the hybrid's image
 // equal to chapter 13's bit for bit. Tables (sweep.csv, flight.csv), a plot, heat maps and an animation.
+#include "strahl/machine.hpp"
 #include "strahl/ch01/ray_sets.hpp"
 #include "strahl/ch05/sah.hpp"
 #include "strahl/ch12/accel.hpp"
@@ -261,7 +262,7 @@ void write_table(const std::vector<row>& rows, const fs::path& csv) {
         if (r.left_share) o << *r.left_share;
         o << ',' << r.differing << '\n';
     }
-    write_text(csv, o.str());
+    write_text(csv, with_machine(o.str(), this_machine(1)));  // the sweep runs on one thread
 }
 
 // The 16-lane hybrid's speed over chapter 13's against the threshold as a fraction of K, a line per scene
@@ -370,7 +371,7 @@ int run_flight(scene s, const std::string& name, const flight_options& o, const 
         bar.add();
     }
     bar.finish();
-    write_text(folder / "flight.csv", csv.str());
+    write_text(folder / "flight.csv", with_machine(csv.str(), this_machine(parallel_threads())));
     // The pictures exposed for the eye (the scene's light is dim for a camera in the atrium): every frame scaled
     // by one factor, the 99th percentile of the first frame's brightest channel mapped to 0.9. Only the files:
     // the comparisons above are on the rendered values.

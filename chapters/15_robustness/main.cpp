@@ -10,6 +10,7 @@
 // (scale.csv, scale.svg; --scale-only writes just those, --replot redraws the plot from a scale.csv). Then the
 // chapter's table: escapes and self-hits per million rays against Mrays/s on the bunny and Sponza
 // (table.csv, escape_vs_speed.svg). Embree with and without its robust flag on the same aimed rays.
+#include "strahl/machine.hpp"
 #include "strahl/camera.hpp"
 #include "strahl/ch01/ray_sets.hpp"
 #include "strahl/ch15/accel.hpp"
@@ -18,6 +19,7 @@
 #include "strahl/ch15/race_ratios.hpp"
 #include "strahl/ch15/scale.hpp"
 #include "strahl/parallel.hpp"
+#include <thread>
 #include "strahl/plot.hpp"
 #include "strahl/procedural.hpp"
 #include "strahl/program.hpp"
@@ -436,7 +438,7 @@ int run(int argc, const char* const* argv) {
         for (const char* f : {"scale.csv", "scale.svg"}) prepare_output(folder / f, args.has("out"), args.has("force"));
         const thread_limit counting(read_threads(args, 0));
         const std::vector<scale_row> rows = run_scale(quick);
-        write_text(folder / "scale.csv", scale_csv(rows));
+        write_text(folder / "scale.csv", with_machine(scale_csv(rows), this_machine(parallel_threads())));
         write_scale_plot(read_scale_csv(folder / "scale.csv"), folder / "scale.svg");  // as --replot draws it
         std::printf("wrote %s, %s\n", (folder / "scale.csv").string().c_str(), (folder / "scale.svg").string().c_str());
         return 0;
@@ -482,11 +484,13 @@ int run(int argc, const char* const* argv) {
         scenes.push_back(plain_name(s.name));
         run_speed(s, size.width, size.height, repeats, t);
     }
-    const std::string table_csv = table(t, scenes);
-    write_text(folder / "escapes.csv", escapes_csv);
-    write_text(folder / "spawn.csv", spawn_csv);
+    const std::string table_csv = with_machine(table(t, scenes), this_machine(1));  // speeds on one thread
+    // Embree's escapes and hits depend on its kernels: the machine's columns, with the counting threads.
+    const machine_columns counted = this_machine(threads == 0 ? int(std::max(1u, std::thread::hardware_concurrency())) : threads);
+    write_text(folder / "escapes.csv", with_machine(escapes_csv, counted));
+    write_text(folder / "spawn.csv", spawn_csv);  // the course's tests alone: the same counts on any machine
     write_text(folder / "far.csv", far_csv);
-    write_text(folder / "scale.csv", scale_csv(scale_rows));
+    write_text(folder / "scale.csv", with_machine(scale_csv(scale_rows), counted));
     write_scale_plot(read_scale_csv(folder / "scale.csv"), folder / "scale.svg");  // as --replot draws it
     write_text(folder / "table.csv", table_csv);
     write_plot(t, folder / "escape_vs_speed.svg");

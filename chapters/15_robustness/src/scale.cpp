@@ -1,4 +1,5 @@
 // Chapter 15's scale experiment (scale.hpp).
+#include "strahl/machine.hpp"
 #include "strahl/ch15/scale.hpp"
 #include "strahl/ch15/embree_robust.hpp"
 #include "strahl/ch15/experiments.hpp"
@@ -135,7 +136,7 @@ std::string scale_csv(const std::vector<scale_row>& rows) {
 // --replot: the rows of a scale.csv this program wrote.
 std::vector<scale_row> read_scale_csv(const fs::path& file) {
     std::vector<scale_row> rows;
-    for (const csv_row& r : read_csv(file, scale_header, "a scale.csv written by ch15")) {
+    for (const csv_row& r : read_csv(file, scale_header, machine_header, "a scale.csv written by ch15")) {
         const auto num = [&](std::size_t k) { return csv_number(file, r, k); };
         rows.push_back({num(0), num(1), num(2), r.cells[3], std::size_t(num(4)), std::size_t(num(5)), std::size_t(num(6))});
     }

@@ -70,22 +70,6 @@ void print_table(std::ostream& out, const std::vector<race_row>& rows) {
     }
 }
 
-machine_columns this_machine(int threads) {
-    machine_columns m;
-    std::ifstream cpu("/proc/cpuinfo");
-    std::string line;
-    m.cpu = "unknown CPU";
-    while (std::getline(cpu, line))
-        if (line.rfind("model name", 0) == 0) { m.cpu = line.substr(line.find(':') + 2); break; }
-    m.kernels = embree_configuration().kernels.empty() ? "none" : embree_configuration().kernels;
-    m.threads = threads;
-    const std::time_t now = std::time(nullptr);
-    char date[16];
-    std::strftime(date, sizeof date, "%Y-%m-%d", std::gmtime(&now));
-    m.date = date;
-    return m;
-}
-
 std::string to_csv(const std::vector<race_row>& rows, const machine_columns& machine) {
     std::ostringstream out;
     out << race_csv_header << ',' << race_csv_machine_header << '\n';

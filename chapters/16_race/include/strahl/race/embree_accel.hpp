@@ -12,6 +12,7 @@
 //   strict comparison, so t = tmin is already excluded; the far end is closed in Embree (T <= absDen * tfar),
 //   so tfar is tmax moved inwards by one ulp.
 #pragma once
+#include "strahl/embree_report.hpp"
 #include "strahl/accel.hpp"
 #include "strahl/denormals.hpp"
 #include <atomic>
@@ -64,17 +65,9 @@ bool embree_available();
 // Throws std::runtime_error where Embree is not available, std::invalid_argument for instanced packets.
 std::unique_ptr<accel> make_embree_accel(const embree_config& config);
 
-// Embree's own account of itself, read once from the report a device prints when created with verbose=1:
-// its version, the instruction sets this CPU supports and those the library was compiled for, and so the
-// kernels it runs (the widest in both lists). Empty strings where Embree is not available.
-struct embree_report {
-    std::string version;    // "3.13.5"
-    std::string supported;  // "SSE2 SSE4.2 AVX AVX2 AVX512"
-    std::string compiled;   // "SSE2 SSE4.2 AVX AVX2 AVX512"
-    std::string kernels;    // "AVX512": the widest target in both
-    std::string summary() const;  // "Embree 3.13.5, AVX512 kernels", or "no Embree"
-};
-const embree_report& embree_configuration();
+// Embree's own account of itself (version, kernels): strahl/embree_report.hpp.
+using strahl::embree_configuration;
+using strahl::embree_report;
 
 // Flush-to-zero and denormals-are-zero around Embree's calls (strahl/denormals.hpp).
 using strahl::denormals_are_flushed;

@@ -1,6 +1,7 @@
 // The race's results: one row per scene, structure and ray set, printed as a table and written as CSV,
 // Markdown and SVG plots.
 #pragma once
+#include "strahl/machine.hpp"
 #include "strahl/race_csv.hpp"
 #include "strahl/race/measure.hpp"
 #include <filesystem>
@@ -25,13 +26,9 @@ struct race_row {
     std::string cpu;  // the machine's CPU where the row was read from a file that names it, else empty
 };
 
-// race.csv's machine columns (strahl/race_csv.hpp: race_csv_machine_header).
-struct machine_columns {
-    std::string cpu, kernels, date;
-    int threads = 1;
-};
-// This machine's, for a race tracing with `threads` threads: the CPU's model name, Embree's kernels, today.
-machine_columns this_machine(int threads);
+// race.csv's machine columns (strahl/race_csv.hpp: race_csv_machine_header): strahl/machine.hpp's.
+using strahl::machine_columns;
+using strahl::this_machine;
 
 // Fills the ratio columns from the embree-medium rows of the same scene and ray set.
 void add_embree_ratios(std::vector<race_row>& rows);

@@ -1,33 +1,34 @@
-// What Embree runs on this machine (embree_accel.hpp's embree_report): its version and the instruction set
-// of the kernels it chose, read from a verbose device's own report.
-#include "strahl/race/embree_accel.hpp"
+// What Embree runs on this machine (embree_report.hpp): its version and the instruction set of the kernels
+// it chose, read from a verbose device's own report. Compiled with STRAHL_HAVE_EMBREE where Embree was found.
+#include "strahl/embree_report.hpp"
 
-namespace strahl::race {
+namespace strahl {
 
 std::string embree_report::summary() const {
     if (version.empty()) return "no Embree";
     return "Embree " + version + ", " + (kernels.empty() ? std::string("unknown") : kernels) + " kernels";
 }
 
-}  // namespace strahl::race
+}  // namespace strahl
 
 #ifndef STRAHL_HAVE_EMBREE
 
-namespace strahl::race {
+namespace strahl {
 const embree_report& embree_configuration() {
     static const embree_report none;
     return none;
 }
-}  // namespace strahl::race
+}  // namespace strahl
 
 #else
 
+#include "strahl/denormals.hpp"
 #include <embree3/rtcore.h>
 #include <iostream>
 #include <sstream>
 #include <string>
 
-namespace strahl::race {
+namespace strahl {
 
 const embree_report& embree_configuration() {
     static const embree_report report = [] {
@@ -71,6 +72,6 @@ const embree_report& embree_configuration() {
     return report;
 }
 
-}  // namespace strahl::race
+}  // namespace strahl
 
 #endif
