@@ -2,8 +2,8 @@
 // teapot with brute-force Whitted ray tracing, and prints what it cost: rays by kind, rays per pixel,
 // Mrays/s, primitive tests per ray, also as tables (renders.csv; glossy.csv: the Cornell box's rays at 1 to 32
 // glossy samples). --sweep measures how that cost grows with the triangle count.
-#include "strahl/machine.hpp"
 #include "strahl/ch01/render.hpp"
+#include "strahl/machine.hpp"
 #include "strahl/parallel.hpp"
 #include "strahl/plot.hpp"
 #include "strahl/procedural.hpp"

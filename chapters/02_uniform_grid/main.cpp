@@ -3,10 +3,10 @@
 // ray, Mrays/s over plain triangles and over chapter 01's virtual objects (scenes.csv); box against exact
 // insertion (insertion.csv); the same teapot alone and in a stadium; and lambda swept against build time,
 // memory and rays/s (lambda_sweep.csv).
-#include "strahl/machine.hpp"
 #include "strahl/ch02/accel.hpp"
 #include "strahl/ch02/measure.hpp"
 #include "strahl/display.hpp"
+#include "strahl/machine.hpp"
 #include "strahl/scene.hpp"
 #include "strahl/parallel.hpp"
 #include "strahl/plot.hpp"

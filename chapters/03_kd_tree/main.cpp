@@ -3,10 +3,11 @@
 // facing ratio), draws the first levels' split planes over the render, and prints per set: nodes, leaves,
 // depth, references per triangle, memory, build time, SAH cost, nodes and triangles tested per ray, Mrays/s,
 // and writes that table as runs.csv.
-#include "strahl/machine.hpp"
+#include "strahl/diagram.hpp"
 #include "strahl/ch03/accel.hpp"
 #include "strahl/display.hpp"
 #include "strahl/image.hpp"
+#include "strahl/machine.hpp"
 #include "strahl/parallel.hpp"
 #include "strahl/procedural.hpp"
 #include "strahl/primary_trace.hpp"
@@ -128,11 +129,7 @@ int run(int argc, const char* const* argv) {
         .flag("quick", "smaller images and only the built-in scenes")
         .option("diagrams", "DIR", "", "only draw the chapter's figure into DIR/ (near_far.svg; --force to replace it)");
     if (!args.parse(argc, argv)) return 0;
-    if (args.has("diagrams")) {
-        for (const fs::path& f : write_diagrams(args.get("diagrams"), args.has("force")))
-            std::printf("wrote %s\n", f.string().c_str());
-        return 0;
-    }
+    if (draw_diagrams_if_asked(args, write_diagrams)) return 0;
     const bool quick = args.has("quick");
     const int threads = read_threads(args, 0);
     const thread_limit limit(threads);

@@ -3,12 +3,13 @@
 // build: nodes, leaves, depth, memory, build time, box and triangle tests per ray, Mrays/s, and writes that
 // table as runs.csv. Draws the lecture's picture of the AABB problem: box tests per pixel as a heat map
 // (rays grazing the surface pay most), with the boxes of chosen levels drawn over it.
-#include "strahl/machine.hpp"
+#include "strahl/diagram.hpp"
 #include "strahl/ch02/accel.hpp"
 #include "strahl/ch03/accel.hpp"
 #include "strahl/ch04/accel.hpp"
 #include "strahl/display.hpp"
 #include "strahl/image.hpp"
+#include "strahl/machine.hpp"
 #include "strahl/parallel.hpp"
 #include "strahl/procedural.hpp"
 #include "strahl/primary_trace.hpp"
@@ -190,11 +191,7 @@ int run(int argc, const char* const* argv) {
         .option("diagrams", "DIR", "", "only draw the chapter's figures into DIR/ (subdivision.svg, flattened.svg, "
                                        "slab_test.svg; --force to replace them)");
     if (!args.parse(argc, argv)) return 0;
-    if (args.has("diagrams")) {
-        for (const fs::path& f : write_diagrams(args.get("diagrams"), args.has("force")))
-            std::printf("wrote %s\n", f.string().c_str());
-        return 0;
-    }
+    if (draw_diagrams_if_asked(args, write_diagrams)) return 0;
     const bool quick = args.has("quick");
     const int threads = read_threads(args, 0);
     const thread_limit limit(threads);

@@ -2,10 +2,11 @@
 // BVHs with 4 to 256 bins over the teapot in a stadium, the bunny and Sponza (when the shared meshes are
 // there), traces the same primary and diffuse rays through each, and prints and plots the trade: build
 // time against SAH cost against Mrays/s. Every tree's hits are checked against the median tree's.
-#include "strahl/machine.hpp"
+#include "strahl/diagram.hpp"
 #include "strahl/ch01/ray_sets.hpp"
 #include "strahl/ch05/accel.hpp"
 #include "strahl/image.hpp"
+#include "strahl/machine.hpp"
 #include "strahl/parallel.hpp"
 #include "strahl/plot.hpp"
 #include "strahl/primary_trace.hpp"
@@ -137,7 +138,7 @@ void write_table(const scene_rows& all, const fs::path& csv) {
                  << ',' << v.depth << ',' << v.primary_mrays << ',' << v.diffuse_mrays << ',' << v.boxes_per_ray
                  << ',' << v.tris_per_ray << ',' << v.differing << '\n';
     std::ofstream f(csv);
-    f << text.str();
+    f << with_machine(text.str(), this_machine(parallel_threads()));
     f.close();
     if (!f) throw std::runtime_error("cannot write " + csv.string());
 }
@@ -221,11 +222,7 @@ int run(int argc, const char* const* argv) {
         .option("diagrams", "DIR", "", "only draw the chapter's figure into DIR/ (sweep_and_bins.svg; --force to "
                                        "replace it)");
     if (!args.parse(argc, argv)) return 0;
-    if (args.has("diagrams")) {
-        for (const fs::path& f : write_diagrams(args.get("diagrams"), args.has("force")))
-            std::printf("wrote %s\n", f.string().c_str());
-        return 0;
-    }
+    if (draw_diagrams_if_asked(args, write_diagrams)) return 0;
     const bool quick = args.has("quick");
     options o;
     if (args.has("out")) o.folder = args.get("out"), o.user_named = true;
@@ -263,7 +260,6 @@ int run(int argc, const char* const* argv) {
     for (const std::string& name : names)
         if (const auto s = course_scene(name)) all.emplace_back(name, run_scene(*s, name, o));
     write_table(all, csv);
-    stamp_machine(csv, parallel_threads());
     write_plots(all, trade, cost);
     std::printf("wrote %s, %s, %s\n", csv.string().c_str(), trade.string().c_str(), cost.string().c_str());
     std::printf("against Embree on the same rays: build/release/bin/race --accels ch04-median,ch05-sweep,"

@@ -4,10 +4,11 @@
 // budgets, and prints and plots the trade: SAH cost against refinement time; then traces the same primary
 // and diffuse rays through each start tree and each fully refined tree (Mrays/s before and after). Every
 // tree's hits are checked against the median tree's.
-#include "strahl/machine.hpp"
+#include "strahl/diagram.hpp"
 #include "strahl/ch01/primitive_sets.hpp"
 #include "strahl/ch01/ray_sets.hpp"
 #include "strahl/ch06/accel.hpp"
+#include "strahl/machine.hpp"
 #include "strahl/parallel.hpp"
 #include "strahl/plot.hpp"
 #include "strahl/procedural.hpp"
@@ -129,7 +130,7 @@ void write_table(const std::vector<row>& rows, const fs::path& csv) {
              << r.moves << ',' << r.ms << ',' << r.sah_before << ',' << r.sah_after << ',' << r.nodes << ','
              << r.depth << ',' << r.primary_mrays << ',' << r.diffuse_mrays << ',' << r.differing << '\n';
     std::ofstream f(csv);
-    f << text.str();
+    f << with_machine(text.str(), this_machine(parallel_threads()));
     f.close();
     if (!f) throw std::runtime_error("cannot write " + csv.string());
 }
@@ -200,11 +201,7 @@ int run(int argc, const char* const* argv) {
         .flag("quick", "the teapot in a stadium only, 96 x 72 rays, budgets 1,64 and 1,16,64")
         .option("diagrams", "DIR", "", "only draw the chapter's figure into DIR/ (rotation.svg; --force to replace it)");
     if (!args.parse(argc, argv)) return 0;
-    if (args.has("diagrams")) {
-        for (const fs::path& f : write_diagrams(args.get("diagrams"), args.has("force")))
-            std::printf("wrote %s\n", f.string().c_str());
-        return 0;
-    }
+    if (draw_diagrams_if_asked(args, write_diagrams)) return 0;
     const bool quick = args.has("quick");
     options o;
     if (args.has("out")) o.folder = args.get("out"), o.user_named = true;
@@ -244,7 +241,6 @@ int run(int argc, const char* const* argv) {
     for (const std::string& name : names)
         if (const auto s = course_scene(name)) add(name, *s);
     write_table(rows, csv);
-    stamp_machine(csv, parallel_threads());
     write_plots(rows, o.folder);
     std::printf("wrote %s", csv.string().c_str());
     for (const std::string& name : scenes_of(rows)) std::printf(", %s", plot_path(o.folder, name).string().c_str());

@@ -3,7 +3,7 @@
 // there), and measures: the build's phases at 1 and N threads; the trees' SAH cost and trace speed against
 // chapter 05's binned SAH tree on the same rays (every tree's hits checked against it); and the radix sort
 // against std::sort and tbb::parallel_sort on the same keys.
-#include "strahl/machine.hpp"
+#include "strahl/diagram.hpp"
 #include "strahl/ch01/primitive_sets.hpp"
 #include "strahl/ch01/ray_sets.hpp"
 #include "strahl/ch05/accel.hpp"
@@ -11,6 +11,7 @@
 #include "strahl/ch07/builder_scenes.hpp"
 #include "strahl/ch07/morton.hpp"
 #include "strahl/ch07/radix_sort.hpp"
+#include "strahl/machine.hpp"
 #include "strahl/parallel.hpp"
 #include "strahl/plot.hpp"
 #include "strahl/procedural.hpp"
@@ -276,11 +277,7 @@ int run(int argc, const char* const* argv) {
         .flag("quick", "the teapot and a soup of 20,000 triangles, 48 x 36 rays, one repeat")
         .option("diagrams", "DIR", "", "only draw the chapter's figure into DIR/ (zorder.svg; --force to replace it)");
     if (!args.parse(argc, argv)) return 0;
-    if (args.has("diagrams")) {
-        for (const fs::path& f : ch07::write_diagrams(args.get("diagrams"), args.has("force")))
-            std::printf("wrote %s\n", f.string().c_str());
-        return 0;
-    }
+    if (draw_diagrams_if_asked(args, ch07::write_diagrams)) return 0;
     const bool quick = args.has("quick");
     options o;
     bool user_named = false;

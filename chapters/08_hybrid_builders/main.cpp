@@ -3,13 +3,14 @@
 // binned SAH tree and chapter 07's LBVH, and measures each one's build time at 1 and N threads, SAH cost
 // and trace speed on one thread (every tree's hits checked against chapter 05's). With --from-race it
 // draws instead the build/trace trade of a race's every BVH builder and Embree, and its Pareto frontier.
-#include "strahl/machine.hpp"
+#include "strahl/diagram.hpp"
 #include "strahl/ch01/ray_sets.hpp"
 #include "strahl/ch05/accel.hpp"
 #include "strahl/ch07/builder_scenes.hpp"
 #include "strahl/ch07/lbvh.hpp"
 #include "strahl/ch08/accel.hpp"
 #include "strahl/ch08/pareto.hpp"
+#include "strahl/machine.hpp"
 #include "strahl/parallel.hpp"
 #include "strahl/plot.hpp"
 #include "strahl/procedural.hpp"
@@ -100,11 +101,7 @@ int run(int argc, const char* const* argv) {
         .flag("quick", "the teapot and a soup of 20,000 triangles, 48 x 36 rays, one repeat")
         .option("diagrams", "DIR", "", "only draw the chapter's figures into DIR/ (treelet.svg, ploc.svg; --force to replace them)");
     if (!args.parse(argc, argv)) return 0;
-    if (args.has("diagrams")) {
-        for (const fs::path& f : strahl::ch08::write_diagrams(args.get("diagrams"), args.has("force")))
-            std::printf("wrote %s\n", f.string().c_str());
-        return 0;
-    }
+    if (draw_diagrams_if_asked(args, strahl::ch08::write_diagrams)) return 0;
     fs::path folder = "out/08_hybrid_builders";
     const bool user_named = args.has("out"), force = args.has("force");
     if (user_named) folder = args.get("out");

@@ -3,6 +3,7 @@
 // chapter 03's k-d tree: SAH cost, references per triangle, memory, build time and the trace speed of
 // chapter 05's fast walk on one thread (every structure's hits checked against the binned tree's); then
 // the overlap threshold alpha swept from 1 (no spatial split) to 0, as alpha.csv and alpha.svg.
+#include "strahl/diagram.hpp"
 #include "strahl/machine.hpp"
 #include "strahl/parallel.hpp"
 #include "strahl/ch01/ray_sets.hpp"
@@ -228,11 +229,7 @@ int run(int argc, const char* const* argv) {
         .flag("quick", "the teapot in a stadium only, 48 x 36 rays, one repeat, alphas 1, 1e-5 and 0")
         .option("diagrams", "DIR", "", "only draw the chapter's figure into DIR/ (splits.svg; --force to replace it)");
     if (!args.parse(argc, argv)) return 0;
-    if (args.has("diagrams")) {
-        for (const fs::path& f : strahl::ch09::write_diagrams(args.get("diagrams"), args.has("force")))
-            std::printf("wrote %s\n", f.string().c_str());
-        return 0;
-    }
+    if (draw_diagrams_if_asked(args, strahl::ch09::write_diagrams)) return 0;
     fs::path folder = "out/09_sbvh";
     const bool user_named = args.has("out"), force = args.has("force");
     if (user_named) folder = args.get("out");

@@ -6,6 +6,7 @@
 // the frame's primary rays, the twisting mesh's SAH cost; every two-level method's hits checked against the
 // rebuilt one's. Then a scene of many instances (10 million triangles and more), built and traced
 // instanced, its memory against its flattened copy's.
+#include "strahl/diagram.hpp"
 #include "strahl/machine.hpp"
 #include "strahl/parallel.hpp"
 #include "strahl/ch01/ray_sets.hpp"
@@ -295,11 +296,7 @@ int run(int argc, const char* const* argv) {
         .flag("quick", "teapots and a sphere, 3 frames, 48 x 36 rays, 16 instances in the big field")
         .option("diagrams", "DIR", "", "only draw the chapter's figure into DIR/ (instances.svg; --force to replace it)");
     if (!args.parse(argc, argv)) return 0;
-    if (args.has("diagrams")) {
-        for (const fs::path& f : strahl::ch10::write_diagrams(args.get("diagrams"), args.has("force")))
-            std::printf("wrote %s\n", f.string().c_str());
-        return 0;
-    }
+    if (draw_diagrams_if_asked(args, strahl::ch10::write_diagrams)) return 0;
     fs::path folder = "out/10_two_level";
     const bool user_named = args.has("out"), force = args.has("force");
     if (user_named) folder = args.get("out");

@@ -5,11 +5,12 @@
 // step's speed-up over the first. Then chapter 01's Whitted renderer with rough reflection on the Cornell
 // box with the bunny: virtual primitives and materials, a variant of both, triangles only with virtual
 // materials and with a switch; rays per second, the images compared bit for bit. Tables, CSV files, plots.
-#include "strahl/machine.hpp"
+#include "strahl/diagram.hpp"
 #include "strahl/ch01/ray_sets.hpp"
 #include "strahl/ch05/accel.hpp"
 #include "strahl/ch11/step_report.hpp"
 #include "strahl/ch11/steps.hpp"
+#include "strahl/machine.hpp"
 #include "strahl/parallel.hpp"
 #include "strahl/plot.hpp"
 #include "strahl/procedural.hpp"
@@ -252,11 +253,7 @@ int run(int argc, const char* const* argv) {
                 "--processes N --out DIR measured (DIR/processes/*/race.csv); writes step_report.csv")
         .option("diagrams", "DIR", "", "only draw the chapter's figure into DIR/ (layouts.svg; --force to replace it)");
     if (!args.parse(argc, argv)) return 0;
-    if (args.has("diagrams")) {
-        for (const fs::path& f : strahl::ch11::write_diagrams(args.get("diagrams"), args.has("force")))
-            std::printf("wrote %s\n", f.string().c_str());
-        return 0;
-    }
+    if (draw_diagrams_if_asked(args, strahl::ch11::write_diagrams)) return 0;
     if (args.has("step-report")) {
         const fs::path folder = args.has("out") ? fs::path(args.get("out")) : fs::path("out/11_devirtualize");
         prepare_output(folder / "step_report.csv", args.has("out"), args.has("force"));

@@ -5,12 +5,13 @@
 // median of interleaved rounds), the lanes a packet keeps busy, nodes, boxes and triangles per ray. Every
 // packet tracer's answers are checked against chapter 13's. Two tables (packets.csv, lanes.csv), a plot, and
 // per scene a heat map of the busy lanes of the 16-lane wide walk.
-#include "strahl/machine.hpp"
+#include "strahl/diagram.hpp"
 #include "strahl/ch01/ray_sets.hpp"
 #include "strahl/ch05/sah.hpp"
 #include "strahl/ch12/accel.hpp"
 #include "strahl/ch13/accel.hpp"
 #include "strahl/image.hpp"
+#include "strahl/machine.hpp"
 #include "strahl/parallel.hpp"
 #include "strahl/plot.hpp"
 #include "strahl/procedural.hpp"
@@ -357,11 +358,7 @@ int run(int argc, const char* const* argv) {
         .flag("quick", "the teapot in a stadium only, 96 x 72 rays")
         .option("diagrams", "DIR", "", "only draw the chapter's figure into DIR/ (packet.svg; --force to replace it)");
     if (!args.parse(argc, argv)) return 0;
-    if (args.has("diagrams")) {
-        for (const fs::path& f : strahl::ch12::write_diagrams(args.get("diagrams"), args.has("force")))
-            std::printf("wrote %s\n", f.string().c_str());
-        return 0;
-    }
+    if (draw_diagrams_if_asked(args, strahl::ch12::write_diagrams)) return 0;
     const bool quick = args.has("quick"), strips = args.has("strips");
     fs::path folder = "out/12_packets";
     const bool user_named = args.has("out");

@@ -3,10 +3,11 @@
 // blocks of 4 or 8 triangles), on the teapot in a stadium, the bunny and Sponza (when the shared meshes are
 // there): primary, diffuse and shadow rays on one thread, Mrays/s, nodes, boxes and triangle lanes per ray,
 // memory. Every tree's answers are checked against the binary tree's. A table, a CSV file and a plot.
-#include "strahl/machine.hpp"
+#include "strahl/diagram.hpp"
 #include "strahl/ch01/ray_sets.hpp"
 #include "strahl/ch05/accel.hpp"
 #include "strahl/ch13/accel.hpp"
+#include "strahl/machine.hpp"
 #include "strahl/parallel.hpp"
 #include "strahl/plot.hpp"
 #include "strahl/procedural.hpp"
@@ -159,11 +160,7 @@ int run(int argc, const char* const* argv) {
         .flag("quick", "the teapot in a stadium only, 96 x 72 rays, four trees")
         .option("diagrams", "DIR", "", "only draw the chapter's figure into DIR/ (collapse.svg; --force to replace it)");
     if (!args.parse(argc, argv)) return 0;
-    if (args.has("diagrams")) {
-        for (const std::filesystem::path& f : strahl::ch13::write_diagrams(args.get("diagrams"), args.has("force")))
-            std::printf("wrote %s\n", f.string().c_str());
-        return 0;
-    }
+    if (draw_diagrams_if_asked(args, strahl::ch13::write_diagrams)) return 0;
     const bool quick = args.has("quick");
     fs::path folder = "out/13_wide_bvh";
     const bool user_named = args.has("out");

@@ -9,7 +9,7 @@
 // a camera flight through Sponza with a mirror floor (chapter 11's Whitted shading, all threads), each frame
 // rendered by the hybrid in packets, by chapter 13's tree and by Embree one ray at a time, the hybrid's image
 // equal to chapter 13's bit for bit. Tables (sweep.csv, flight.csv), a plot, heat maps and an animation.
-#include "strahl/machine.hpp"
+#include "strahl/diagram.hpp"
 #include "strahl/ch01/ray_sets.hpp"
 #include "strahl/ch05/sah.hpp"
 #include "strahl/ch12/accel.hpp"
@@ -19,6 +19,7 @@
 #include "strahl/ch14/embree_tracer.hpp"
 #include "strahl/ch14/flight.hpp"
 #include "strahl/image.hpp"
+#include "strahl/machine.hpp"
 #include "strahl/parallel.hpp"
 #include "strahl/plot.hpp"
 #include "strahl/procedural.hpp"
@@ -421,11 +422,7 @@ int run(int argc, const char* const* argv) {
         .flag("quick", "the teapot in a stadium only: the sweep at 96 x 72 rays, a flight of 4 frames of 160 x 90")
         .option("diagrams", "DIR", "", "only draw the chapter's figure into DIR/ (switch.svg; --force to replace it)");
     if (!args.parse(argc, argv)) return 0;
-    if (args.has("diagrams")) {
-        for (const fs::path& f : strahl::ch14::write_diagrams(args.get("diagrams"), args.has("force")))
-            std::printf("wrote %s\n", f.string().c_str());
-        return 0;
-    }
+    if (draw_diagrams_if_asked(args, strahl::ch14::write_diagrams)) return 0;
     const bool quick = args.has("quick"), sweep = !args.has("no-sweep"), flight = !args.has("no-flight");
     if (!sweep && !flight) throw usage_error("--no-sweep and --no-flight leave nothing to do");
     fs::path folder = "out/14_hybrid_traversal";

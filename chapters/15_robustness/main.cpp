@@ -10,16 +10,17 @@
 // (scale.csv, scale.svg; --scale-only writes just those, --replot redraws the plot from a scale.csv). Then the
 // chapter's table: escapes and self-hits per million rays against Mrays/s on the bunny and Sponza
 // (table.csv, escape_vs_speed.svg). Embree with and without its robust flag on the same aimed rays.
-#include "strahl/machine.hpp"
+#include "strahl/diagram.hpp"
 #include "strahl/camera.hpp"
 #include "strahl/ch01/ray_sets.hpp"
 #include "strahl/ch15/accel.hpp"
 #include "strahl/ch15/embree_robust.hpp"
 #include "strahl/ch15/experiments.hpp"
+#include "strahl/ch15/far.hpp"
 #include "strahl/ch15/race_ratios.hpp"
 #include "strahl/ch15/scale.hpp"
+#include "strahl/machine.hpp"
 #include "strahl/parallel.hpp"
-#include <thread>
 #include "strahl/plot.hpp"
 #include "strahl/procedural.hpp"
 #include "strahl/program.hpp"
@@ -194,64 +195,6 @@ void run_self_hits(std::size_t points, std::map<key, tally>& t) {
     bar.finish();
 }
 
-// 2b. Exact from far away: the teapot (about 6 units) seen from 1e3 to 1e7 units, a field of view framing
-// it, so that the rays' origins lie far outside every box and grazing rays meet its silhouette. Each test in
-// the fast walk against brute force with the same test, closest hits bit for bit, with the rays' origins
-// kept where they are and moved to the scene (ray_frame.hpp: what every structure does). Kept, Moeller-
-// Trumbore's s = org - v0 carries the origin's rounding into u and v: its triangles accept rays passing
-// beside them (the hits column grows), which brute force finds and the tree's boxes cull (far.csv).
-template <test_kind K>
-void far_rows(const scene& s, const std::vector<ray>& rays, float distance, std::ostringstream& csv) {
-    robust_bvh<K, box_kind::fast> tree;
-    brute_tests<K> brute;
-    tree.build(s), brute.build(s);
-    const ray_frame scene_frame = tree.frame();  // the one build() set
-    for (const bool moved : {false, true}) {
-        const ray_frame f = moved ? scene_frame : ray_frame();
-        tree.set_frame(f), brute.set_frame(f);
-        std::vector<hit> a(rays.size()), b(rays.size());
-        constexpr std::size_t chunk = 256;
-        parallel_for_chunks((rays.size() + chunk - 1) / chunk, 1, [&](std::size_t c0, std::size_t c1) {
-            for (std::size_t c = c0; c < c1; ++c) {
-                const std::size_t first = c * chunk, n = std::min(chunk, rays.size() - first);
-                const std::span<const ray> r(rays.data() + first, n);
-                tree.intersect(r, std::span<hit>(a.data() + first, n));
-                brute.intersect(r, std::span<hit>(b.data() + first, n));
-            }
-        });
-        std::size_t hits = 0, differing = 0;
-        for (std::size_t i = 0; i < rays.size(); ++i) {
-            hits += b[i].found();
-            differing += a[i].prim != b[i].prim || std::memcmp(&a[i].t, &b[i].t, 4) != 0 ||
-                         std::memcmp(&a[i].u, &b[i].u, 4) != 0 || std::memcmp(&a[i].v, &b[i].v, 4) != 0;
-        }
-        const char* origins = moved ? "moved" : "kept";
-        csv << distance << ',' << name(K) << ',' << origins << ',' << rays.size() << ',' << hits << ',' << differing << '\n';
-        std::printf("  %-10g %-12s %-8s %9zu %9zu %10zu\n", double(distance), name(K), origins, rays.size(), hits, differing);
-    }
-}
-
-std::string run_far(bool quick) {
-    const int w = quick ? 32 : 320, h = quick ? 24 : 240;
-    std::printf("\n2b. from far away: the teapot seen from 1e3 to 1e7, %d x %d primary rays, the fast walk against "
-                "brute force with the same test, origins kept or moved to the scene\n", w, h);
-    std::printf("  %-10s %-12s %-8s %9s %9s %10s\n", "distance", "test", "origins", "rays", "hits", "differing");
-    std::ostringstream csv;
-    csv << "distance,test,origins,rays,hits,unlike_brute_force\n";  // not "differing": kept origins may differ
-    scene s = builtin_scene("teapot");
-    const vec3 target(0.2f, 1.4f, 0.0f);
-    for (const float distance : {1e3f, 1e4f, 1e5f, 1e6f, 1e7f}) {
-        const camera cam(camera_desc{target + glm::normalize(vec3(0.3f, 0.4f, 1.0f)) * distance, target, vec3(0, 1, 0),
-                                     2.0f * glm::degrees(std::atan(3.5f / distance))}, w, h);
-        std::vector<ray> rays;
-        for (int y = 0; y < h; ++y)
-            for (int x = 0; x < w; ++x) rays.push_back(cam.pixel_ray(x, y));
-        far_rows<test_kind::mt>(s, rays, distance, csv);
-        far_rows<test_kind::watertight>(s, rays, distance, csv);
-    }
-    return csv.str();
-}
-
 // 3b. Closest-hit speed on one thread, primary and diffuse rays; each structure's hits compared with the
 // fast walk's with the same test (which equals brute force with that test).
 void run_speed(const scene& s, int width, int height, int repeats, std::map<key, tally>& t) {
@@ -410,11 +353,7 @@ int run(int argc, const char* const* argv) {
         .option("diagrams", "DIR", "", "only draw the chapter's figures into DIR/ (crack.svg, shear.svg, offsets.svg; "
                                        "--force to replace them)");
     if (!args.parse(argc, argv)) return 0;
-    if (args.has("diagrams")) {
-        for (const fs::path& f : write_diagrams(args.get("diagrams"), args.has("force")))
-            std::printf("wrote %s\n", f.string().c_str());
-        return 0;
-    }
+    if (draw_diagrams_if_asked(args, write_diagrams)) return 0;
     const fs::path single_folder = args.has("out") ? fs::path(args.get("out")) : fs::path("out/15_robustness");
     if (args.has("from-race")) {
         const fs::path& folder = single_folder;
@@ -468,8 +407,10 @@ int run(int argc, const char* const* argv) {
     std::map<key, tally> t;
     std::string escapes_csv, spawn_csv, far_csv;
     std::vector<scale_row> scale_rows;
+    machine_columns counted;  // Embree's escapes and hits depend on its kernels: the machine, the counting threads
     {
         const thread_limit counting(threads);
+        counted = this_machine(parallel_threads());
         escapes_csv = run_escapes(quick, t);
         spawn_csv = run_spawn(std::size_t(points));
         far_csv = run_far(quick);
@@ -485,8 +426,6 @@ int run(int argc, const char* const* argv) {
         run_speed(s, size.width, size.height, repeats, t);
     }
     const std::string table_csv = with_machine(table(t, scenes), this_machine(1));  // speeds on one thread
-    // Embree's escapes and hits depend on its kernels: the machine's columns, with the counting threads.
-    const machine_columns counted = this_machine(threads == 0 ? int(std::max(1u, std::thread::hardware_concurrency())) : threads);
     write_text(folder / "escapes.csv", with_machine(escapes_csv, counted));
     write_text(folder / "spawn.csv", spawn_csv);  // the course's tests alone: the same counts on any machine
     write_text(folder / "far.csv", far_csv);

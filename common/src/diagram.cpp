@@ -130,4 +130,11 @@ std::vector<std::filesystem::path> write_figures(const std::filesystem::path& fo
     return files;
 }
 
+bool draw_diagrams_if_asked(const cli& args, figure_writer write) {
+    if (!args.has("diagrams")) return false;
+    for (const std::filesystem::path& f : write(args.get("diagrams"), args.has("force")))
+        std::printf("wrote %s\n", f.string().c_str());
+    return true;
+}
+
 }  // namespace strahl

@@ -1,9 +1,9 @@
 // Chapter 15's scale experiment (scale.hpp).
-#include "strahl/machine.hpp"
 #include "strahl/ch15/scale.hpp"
 #include "strahl/ch15/embree_robust.hpp"
 #include "strahl/ch15/experiments.hpp"
 #include "strahl/ch15/robust_bvh.hpp"
+#include "strahl/machine.hpp"
 #include "strahl/plot.hpp"
 #include "strahl/procedural.hpp"
 #include "strahl/program.hpp"

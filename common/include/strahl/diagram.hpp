@@ -89,6 +89,13 @@ struct named_figure {
 std::vector<std::filesystem::path> write_figures(const std::filesystem::path& folder, bool force,
                                                  const std::vector<named_figure>& figures);
 
+// A chapter program's --diagrams DIR: where the option was given, writes the chapter's figures with `write`
+// (its write_diagrams; --force to replace them), prints each file written and returns true, and the program
+// stops; else false.
+class cli;
+using figure_writer = std::vector<std::filesystem::path> (*)(const std::filesystem::path& folder, bool force);
+bool draw_diagrams_if_asked(const cli& args, figure_writer write);
+
 // The text with <, >, & and " written as entities, for SVG (and any XML) text and attributes.
 std::string svg_escape(const std::string& text);
 

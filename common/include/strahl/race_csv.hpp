@@ -2,6 +2,7 @@
 // that draw from a race (chapter 08's Pareto plot, chapter 11's staircase), so that every chapter reads the
 // one format the race writes.
 #pragma once
+#include "strahl/machine.hpp"
 #include <cstddef>
 #include <filesystem>
 #include <string>
@@ -19,7 +20,7 @@ inline constexpr const char* race_csv_header =
 // machine). cpu: the model /proc/cpuinfo names ("AMD EPYC"); threads: the tracing threads (race --threads);
 // kernels: the instruction set of Embree's kernels ("AVX512"; "none" without Embree); date: YYYY-MM-DD (UTC).
 // Readers take files with and without them.
-inline constexpr const char* race_csv_machine_header = "cpu,threads,kernels,date";
+inline constexpr const char* race_csv_machine_header = machine_header;
 
 // One row, the columns the plots and chapter 11's step report use. scene is the file's stem ("bunny" for
 // bunny.ply); rays is primary, diffuse or shadow; a cell the race left empty (shadow rays have no
