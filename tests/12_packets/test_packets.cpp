@@ -97,6 +97,21 @@ TEST_CASE("ch12 packets: lane counts add up, and packets visit fewer nodes than 
     }
 }
 
+TEST_CASE("ch12 packets: a batch of fewer rows than a tile still fills the packets", "[ch12]") {
+    // A thread's chunk of a small ray set may hold one row of the image: its tiles are 16 x 1, not 4 x 1.
+    const scene s = teapot_scene(4);
+    const std::vector<ray> rays = test::image_rays(s, 64, 48, ch01::ray_kind::primary);
+    const std::span<const ray> one_row(rays.data() + 64 * 20, 64 + 5), three_rows(rays.data() + 64 * 20, 3 * 64);
+    for (const walk_kind w : {walk_kind::wide, walk_kind::masked}) {
+        const auto a = make_accel("test", packet_config{w, 16, 4, 4, 64});
+        a->build(s);
+        std::vector<hit> hits(three_rows.size());
+        INFO(to_string(w));
+        CHECK(a->closest_lanes(one_row, std::span(hits).first(one_row.size()), nullptr).packets == 4 + 1);
+        CHECK(a->closest_lanes(three_rows, hits, nullptr).packets == 3 * 64 / 15 + 1);  // tiles 5 x 3, the last 4 x 3
+    }
+}
+
 TEST_CASE("ch12 packets: the lanes' terms computed K at a time equal lane_terms bit for bit, refusals included",
           "[ch12]") {
     pcg32 g(1207);

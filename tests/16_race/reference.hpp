@@ -10,8 +10,9 @@
 
 namespace strahl::test {
 
-// trace_closest / trace_any cut a batch into chunks of 1024 rays, so a small ray set (the bunny's 768
-// primary rays) would run on one thread: these cut it into chunks of 64 instead, each traced as one batch.
+// trace_closest / trace_any cut a batch into chunks of whole tile rows where it is large (ch01::thread_chunk):
+// these cut every batch into chunks of 64 rays instead, each traced as one batch, so that the exactness tests
+// also see packets regrouped at arbitrary cuts.
 inline void closest_in_parallel(const accel& a, std::span<const ray> rays, std::span<hit> hits) {
     parallel_for_chunks(rays.size(), 64, [&](std::size_t b, std::size_t e) {
         race::trace_closest(a, rays.subspan(b, e - b), hits.subspan(b, e - b), 1);

@@ -27,8 +27,11 @@ std::vector<ray> secondary_rays(ray_kind kind, const scene& s, std::span<const r
                                 std::span<const hit> primary_hits, std::uint64_t seed = 1);
 
 // Traces rays through an accel on `threads` threads (<= 1: on this thread), in chunks of about 1024
-// consecutive rays aligned to a.batch_alignment(); the results are the same whatever the thread count.
+// consecutive rays aligned to a.batch_alignment() (smaller ones for a small set, so that the threads share
+// it evenly); an exact structure's results are the same whatever the thread count.
 void trace_closest(const accel& a, std::span<const ray> rays, std::span<hit> hits, int threads = 1);
+// The chunk the two above hand each thread for n rays, a batch alignment and a thread count > 1.
+std::size_t thread_chunk(std::size_t n, std::size_t align, int threads);
 void trace_any(const accel& a, std::span<const ray> rays, std::span<std::uint8_t> blocked, int threads = 1);
 
 // Convenience: one ray set of a kind for a scene and image size, primary hits found with `exact`.

@@ -67,8 +67,9 @@ std::unique_ptr<packet_accel_base> make_accel(std::string name, const packet_con
 // The packets of a batch of n rays: calls f(ids, count) per packet with the batch indices of its rays (count
 // <= tile_w * tile_h; lane i holds ray ids[i]). Tiles of rows of `image_width` rays, where the batch holds
 // whole rows; the rays past the last whole row, or all of them when image_width is 0 or narrower than a
-// tile, in packets of consecutive rays. A tile cut by the image's right edge or the batch's last rows is a
-// partial packet.
+// tile, in packets of consecutive rays. Where the batch's last rows are fewer than a tile's height, their
+// tiles are wider by as much (a thread's chunk of a small ray set may hold one row: tiles of 16 x 1, not
+// 4 x 1). A tile cut by the image's right edge is a partial packet.
 template <class F>
 void for_each_packet(std::size_t n, const packet_config& c, F&& f) {
     const std::size_t size = std::size_t(c.tile_w) * std::size_t(c.tile_h);
@@ -77,14 +78,18 @@ void for_each_packet(std::size_t n, const packet_config& c, F&& f) {
     if (c.image_width >= c.tile_w && c.image_width > 0) {
         const std::size_t w = std::size_t(c.image_width), rows = n / w;
         rows_end = rows * w;
-        for (std::size_t y = 0; y < rows; y += std::size_t(c.tile_h))
-            for (std::size_t x = 0; x < w; x += std::size_t(c.tile_w)) {
+        for (std::size_t y = 0; y < rows; y += std::size_t(c.tile_h)) {
+            // A band of fewer rows than a tile (the batch's last): tiles as much wider as the lanes allow.
+            const std::size_t h = std::min(std::size_t(c.tile_h), rows - y);
+            const std::size_t tw = std::max(std::size_t(c.tile_w), size / h);
+            for (std::size_t x = 0; x < w; x += tw) {
                 int count = 0;
-                for (std::size_t dy = 0; dy < std::size_t(c.tile_h) && y + dy < rows; ++dy)
-                    for (std::size_t dx = 0; dx < std::size_t(c.tile_w) && x + dx < w; ++dx)
+                for (std::size_t dy = 0; dy < h; ++dy)
+                    for (std::size_t dx = 0; dx < tw && x + dx < w; ++dx)
                         ids[count++] = std::uint32_t((y + dy) * w + x + dx);
                 f(ids, count);
             }
+        }
     }
     for (std::size_t i = rows_end; i < n; i += size) {
         int count = 0;
