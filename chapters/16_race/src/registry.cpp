@@ -90,14 +90,11 @@ accel_entry hybrid(int lanes, int threshold, int image_width, bool strict = fals
 // The course's final tracer, one named row: the 16-lane hybrid with the threshold per packet, as
 // ch14-hybrid16-auto (its tree from chapter 05's binned SAH, chosen for its build time; any hit leaves first).
 // With sbvh, the same tracer on chapter 09's SBVH (spatial splits): its slower build, measured beside it.
-accel_entry final_tracer(int image_width, bool sbvh = false, int nearest_any = -1) {
+accel_entry final_tracer(int image_width, bool sbvh = false) {
     ch14::hybrid_config c{16, 4, 4, image_width, ch14::automatic, false, ch13::child_order::leaves_then_area};
     c.octant_order = true;
     if (sbvh) c.builder = [](const triangle_mesh& m) { return ch09::build_sbvh(m); };
-    if (nearest_any >= 0) c.nearest_any = nearest_any == 1;
-    std::string name = sbvh ? "final-sbvh" : "final";
-    if (nearest_any == 1) name += "-xnear";
-    if (nearest_any == 0) name += "-xrank";
+    const std::string name = sbvh ? "final-sbvh" : "final";
     return {name, "14",
             (sbvh ? "the final tracer on chapter 09's SBVH (spatial splits): " : "the course's final tracer: ") +
                 ch14::describe(c) + "; chapter 13's 8-wide tree (optimal collapse, blocks of 8)" +
@@ -197,7 +194,6 @@ std::vector<accel_entry> registered_accels(const registry_options& o) {
              8, 4, ch13::collapse_method::optimal, true),
         hybrid(8, ch14::automatic, o.packet_width), hybrid(16, ch14::automatic, o.packet_width),
         hybrid(16, ch14::automatic, o.packet_width, true), final_tracer(o.packet_width), final_tracer(o.packet_width, true),
-        final_tracer(o.packet_width, false, 1), final_tracer(o.packet_width, true, 1),
         {"ch15-mt-fast", "15", "chapter 05's binned SAH tree and fast walk, Moeller-Trumbore: chapter 15's baseline",
          [] { return ch15::make_tree(ch15::test_kind::mt, ch15::box_kind::fast); }},
         {"ch15-watertight-fast", "15", "the same tree and walk with the watertight test (Woop, Benthin and Wald 2013)",

@@ -317,14 +317,8 @@ private:
             const auto leaf = [&](const lane_rays<K>& r, unsigned lanes, auto at, std::uint32_t ref) {
                 wide_leaf<Any>(p, r, lanes, at, ref, stats);
             };
-            // (Chapter 14's any hit in closest hit's order: the children nearest first.)
-            bool nearest_any = false;
-            if constexpr (requires { policy_.nearest_any; }) nearest_any = Any && policy_.nearest_any;
-            if (nearest_any)
-                wide_packet_walk<true, Coherent>(wide_, p, stats, leaf, policy_.template hooks<Any, Coherent>(wide_, p, stats));
-            else
-                wide_packet_walk<!Any, Coherent>(wide_, p, stats, leaf,
-                                                 policy_.template hooks<Any, Coherent>(wide_, p, stats));
+            wide_packet_walk<!Any, Coherent>(wide_, p, stats, leaf,
+                                             policy_.template hooks<Any, Coherent>(wide_, p, stats));
         } else {
             const auto leaf = [&](const lane_rays<K>& r, unsigned lanes, auto at, std::uint32_t first, std::uint32_t count) {
                 for (std::uint32_t k = 0; k < count && lanes != 0; ++k) {

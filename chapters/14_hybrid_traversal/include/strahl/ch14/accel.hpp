@@ -32,10 +32,6 @@ struct hybrid_config {
     // Closest hit of the rays that leave: each node's children in its order for the ray's octant (chapter
     // 13's order_by_octant), not sorted by entry distance.
     bool octant_order = false;
-    // Any hit in closest hit's order: packets take the children nearest first, lone rays in the octant's
-    // order (with octant_order) or by entry distance. For trees with spatial splits, whose large surfaces
-    // (Sponza's walls and floor) are cut into many small boxes that no fixed order finds first.
-    bool nearest_any = false;
 };
 
 // One line: "hybrid, 16 lanes, 4x4 tiles, leave at <= 4 lanes" (or "... threshold per packet"), and

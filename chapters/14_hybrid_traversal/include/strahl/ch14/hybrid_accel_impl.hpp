@@ -22,12 +22,11 @@ struct hybrid_policy {
     bool strict = false;  // hybrid_config::strict
     ch13::child_order order = ch13::child_order::leaves_then_area;  // hybrid_config::order
     bool octant = false;  // hybrid_config::octant_order
-    bool nearest_any = false;  // hybrid_config::nearest_any
     template <bool Any, bool Coherent, int K, int N, int M, class Stats>
     hybrid_hooks<Any, Coherent, K, N, M, Stats> hooks(const ch13::wide_bvh<N, M>& tree, ch12::ray_packet<K, 1>& p,
                                                       Stats& stats) const {
         const int t = threshold >= 0 ? threshold : packet_threshold(packet_coherence(p), K, rule);
-        return {tree, p, stats, t, strict, order != ch13::child_order::collapsed, octant, nearest_any};
+        return {tree, p, stats, t, strict, order != ch13::child_order::collapsed, octant};
     }
 };
 
@@ -41,7 +40,7 @@ std::unique_ptr<ch12::packet_accel_base> make_accel(std::string name, const hybr
         throw std::invalid_argument("hybrid tracer: threshold " + std::to_string(c.threshold) + " is not in 0.." +
                                     std::to_string(c.lanes) + " (or automatic)");
     const ch12::packet_config pc{ch12::walk_kind::wide, c.lanes, c.tile_w, c.tile_h, c.image_width, c.builder};
-    const hybrid_policy policy{c.threshold, {}, c.strict, c.order, c.octant_order, c.nearest_any};
+    const hybrid_policy policy{c.threshold, {}, c.strict, c.order, c.octant_order};
     if (c.lanes == 8 && c.tile_w == 4 && c.tile_h == 2) return std::make_unique<hybrid_accel<8>>(std::move(name), pc, policy);
     if (c.lanes == 16 && c.tile_w == 4 && c.tile_h == 4) return std::make_unique<hybrid_accel<16>>(std::move(name), pc, policy);
     throw std::invalid_argument("hybrid tracer: " + std::to_string(c.lanes) + " lanes with " + std::to_string(c.tile_w) +

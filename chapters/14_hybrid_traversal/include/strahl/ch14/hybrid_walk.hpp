@@ -77,7 +77,6 @@ struct hybrid_hooks {
     bool strict = false;  // hybrid_config::strict: the lone walk tests boxes from tmin, not tmin - slack
     bool ranked = false;  // any hit: rays without end visit children in the node's order (child_order.hpp)
     bool octant = false;  // closest hit: children in the node's order for the ray's octant (child_order.hpp)
-    bool nearest_any = false;  // any hit in closest hit's order (hybrid_config::nearest_any)
 
     STRAHL_ALWAYS_INLINE simd::vmask<K> box(const ch12::lane_rays<K>& r, const float* bmin, const float* bmax,
                                             int octant, simd::vfloat<K>& entry) const {
@@ -120,7 +119,7 @@ struct hybrid_hooks {
             return false;
         };
         const float below = strict ? 0.0f : l.slack;
-        if (!Any || nearest_any) {
+        if constexpr (!Any) {
             if (octant) ch13::wide_walk<ch13::visit_order::octant>(tree, s, below, l.slack, r, stats, leaf, ref);
             else ch13::wide_walk<ch13::visit_order::nearest>(tree, s, below, l.slack, r, stats, leaf, ref, nearest_push<N>{});
         }
