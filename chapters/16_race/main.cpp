@@ -68,12 +68,13 @@ image primary_image(const scene& s, std::span<const ray> rays, const std::vector
 // new ones follow them.
 int race_processes(int n, bool more, bool reverse, int argc, const char* const* argv,
                    const std::filesystem::path& out, const std::filesystem::path& cache_dir,
-                   const std::vector<std::pair<std::string, std::string>>& compare, int threads) {
-    // Each child gets this command line without --more, --reverse and --compare, and its own --out.
+                   const std::vector<std::pair<std::string, std::string>>& compare, int threads,
+                   const std::vector<comparison>* against, const std::string& against_name) {
+    // Each child gets this command line without --more, --reverse, --compare and --against, and its own --out.
     std::vector<std::string> base;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
-        if (a == "--compare") ++i;
+        if (a == "--compare" || a == "--against") ++i;
         else if (a != "--reverse" && a != "--more") base.push_back(a);
     }
     const auto folder_of = [&](int k) { return out / "processes" / std::to_string(k); };
@@ -129,6 +130,11 @@ int race_processes(int n, bool more, bool reverse, int argc, const char* const* 
         std::ofstream(out / "compare.csv") << comparisons_csv(all);
         std::ofstream(out / "compare.md") << comparisons_markdown(all, machine);
         std::cout << '\n' << comparisons_markdown(all, machine);
+        if (against) {
+            const std::string md = stability_markdown(compare_verdicts(*against, all), against_name);
+            std::ofstream(out / "verdicts.md") << md;
+            std::cout << '\n' << md;
+        }
     }
     // The scene images: the first process's (every process draws the same).
     for (const auto& f : std::filesystem::directory_iterator(folder_of(1)))
@@ -176,6 +182,8 @@ int run(int argc, const char* const* argv) {
         .option("compare", "A:B,...", "", "with --processes N (at least 5) or --more: for each pair of rows, A's speed over "
                                           "B's within each process and the verdict (faster: A ahead in every process; "
                                           "slower: behind in every one; else level); writes DIR/compare.csv and compare.md")
+        .option("against", "CSV", "", "with --compare: an earlier run's compare.csv; writes DIR/verdicts.md, how many of "
+                                      "the verdicts both runs give held, and the ones that changed")
         .flag("plain-pages", "the course's builds allocate without advice to the kernel (no huge pages, no "
                              "faulting in at once; strahl/huge_pages.hpp): what the advice changes")
         .flag("quick", "built-in scenes only, 96x72 rays, 3 repeats: what ./course run runs");
@@ -224,6 +232,12 @@ int run(int argc, const char* const* argv) {
             throw usage_error("--compare needs several processes: --processes N (at least " +
                               std::to_string(min_processes) + " for a verdict) or --more");
     }
+    // The earlier verdicts, read now: a file that is not one is found before the race, not after it.
+    std::vector<comparison> against;
+    if (args.has("against")) {
+        if (compare.empty()) throw usage_error("--against needs --compare (the pairs whose verdicts to hold against it)");
+        against = read_comparisons_csv(args.get("against"));
+    }
     // Every scene file there, and every built-in name known, before anything is created or traced: a missing
     // one found after the others are loaded (or after an hour of processes) is time lost.
     const std::vector<std::string> scenes = args.has("scenes") ? split(args.get("scenes")) : default_scenes(quick);
@@ -243,7 +257,8 @@ int run(int argc, const char* const* argv) {
     const auto started = std::filesystem::file_time_type::clock::now();
     if (processes > 1 || args.has("more"))
         return race_processes(processes, args.has("more"), args.has("reverse"), argc, argv, out, cache_dir, compare,
-                              threads);
+                              threads, args.has("against") ? &against : nullptr,
+                              args.has("against") ? args.get("against") : std::string());
 
     std::vector<ray_kind> kinds;
     for (const std::string& k : split(args.get("rays"))) kinds.push_back(parse_ray_kind(k));

@@ -211,3 +211,54 @@ TEST_CASE("ch16 processes: the claim rule compares two rows within each process"
     // A row no process measured is named.
     CHECK_THROWS_WITH(compare_rows(p, "A", "C"), Catch::Contains("'C'"));
 }
+
+TEST_CASE("ch16 processes: verdicts held against an earlier run's compare.csv", "[ch16][processes]") {
+    // Two runs of the same pairs: A over B faster in both; on any hit faster, then level; C over B level in
+    // both; one pair the later run lacks, one the earlier lacked.
+    const auto pairs = [](double any4, double c) {
+        std::vector<std::vector<race_row>> p;
+        for (int k = 0; k < 5; ++k)
+            p.push_back({row("A", "primary", 1.0, 1.2, k == 3 ? any4 : 2.4), row("B", "primary", 1.0, 1.0, 2.0),
+                         row("C", "primary", 1.0, k == 1 ? c : 1.1, 2.1)});
+        return p;
+    };
+    std::vector<comparison> earlier = compare_rows(pairs(2.4, 0.9), "A", "B");
+    const std::vector<comparison> c1 = compare_rows(pairs(2.4, 0.9), "C", "B");
+    earlier.insert(earlier.end(), c1.begin(), c1.end());
+    std::vector<comparison> now = compare_rows(pairs(1.9, 0.9), "A", "B");
+    const std::vector<comparison> c2 = compare_rows(pairs(1.9, 0.9), "C", "A");
+    now.insert(now.end(), c2.begin(), c2.end());
+
+    // Through the CSV and back: the same figures and verdicts.
+    const auto dir = scratch_dir("ch16_processes_verdicts");
+    std::ofstream(dir / "compare.csv") << comparisons_csv(earlier);
+    const std::vector<comparison> back = read_comparisons_csv(dir / "compare.csv");
+    REQUIRE(back.size() == earlier.size());
+    CHECK(comparisons_csv(back) == comparisons_csv(earlier));
+    CHECK(back[1].ratios.size() == 5);
+
+    const verdict_stability s = compare_verdicts(back, now);
+    CHECK(s.both == 2);  // A:B closest and any; C:B and C:A are not the same pair
+    CHECK(s.held == 1);
+    REQUIRE(s.changed.size() == 1);
+    CHECK(s.changed[0].now.query == "any");
+    CHECK(s.changed[0].earlier.verdict == "faster");
+    CHECK(s.changed[0].now.verdict == "level");
+    CHECK(s.opposite == 0);
+    const std::string md = stability_markdown(s, "run 1");
+    CHECK(md.find("2 in both, 1 with the same verdict, 1 changed (0 from faster to slower or back)") != std::string::npos);
+    CHECK(md.find("| teapot | primary | any | A | B | 1.200 (1.200 to 1.200) | faster | 1.200 (0.950 to 1.200) | level |") !=
+          std::string::npos);
+
+    // Faster in one run, slower in the other: opposite.
+    std::vector<comparison> flipped = earlier;
+    for (comparison& c : flipped) c.verdict = c.verdict == "faster" ? "slower" : c.verdict;
+    CHECK(compare_verdicts(earlier, flipped).opposite == 3);  // A:B closest and any, C:B any
+
+    // Not a compare.csv: named, with its line.
+    std::ofstream(dir / "race.csv") << "scene,rays\nteapot,primary\n";
+    CHECK_THROWS_WITH(read_comparisons_csv(dir / "race.csv"), Catch::Contains("race.csv"));
+    std::ofstream(dir / "bad.csv") << "scene,rays,query,a,b,processes,ratio_median,ratio_min,ratio_max,verdict,ratios\n"
+                                   << "teapot,primary,nearest,A,B,5,1,1,1,level,1 1 1 1 1\n";
+    CHECK_THROWS_WITH(read_comparisons_csv(dir / "bad.csv"), Catch::Contains("line 2") && Catch::Contains("nearest"));
+}

@@ -233,6 +233,60 @@ std::string comparisons_markdown(const std::vector<comparison>& cs, const std::s
     return out.str();
 }
 
+std::vector<comparison> read_comparisons_csv(const std::filesystem::path& file) {
+    std::vector<comparison> out;
+    const std::string header = "scene,rays,query,a,b,processes,ratio_median,ratio_min,ratio_max,verdict,ratios";
+    for (const csv_row& c : read_csv(file, header, "a compare.csv written by the race (--compare)")) {
+        comparison k{c.cells[0], c.cells[1], c.cells[2], c.cells[3], c.cells[4], {}, {}, {}};
+        if (k.query != "closest" && k.query != "any")
+            throw std::runtime_error(file.string() + ", line " + std::to_string(c.line) + ": query '" + k.query +
+                                     "' is neither closest nor any");
+        k.ratio.samples = int(csv_number(file, c, 5));
+        k.ratio.median = csv_number(file, c, 6), k.ratio.min = csv_number(file, c, 7), k.ratio.max = csv_number(file, c, 8);
+        k.verdict = c.cells[9];
+        std::istringstream ratios(c.cells[10]);
+        for (std::string r; ratios >> r;) k.ratios.push_back(std::strtod(r.c_str(), nullptr));
+        out.push_back(std::move(k));
+    }
+    return out;
+}
+
+verdict_stability compare_verdicts(const std::vector<comparison>& earlier, const std::vector<comparison>& now) {
+    const auto key = [](const comparison& c) { return c.scene + "\n" + c.ray_set + "\n" + c.query + "\n" + c.a + "\n" + c.b; };
+    std::map<std::string, const comparison*> before;
+    for (const comparison& c : earlier) before[key(c)] = &c;
+    verdict_stability s;
+    for (const comparison& c : now) {
+        const auto found = before.find(key(c));
+        if (found == before.end()) continue;
+        ++s.both;
+        const comparison& e = *found->second;
+        if (e.verdict == c.verdict) {
+            ++s.held;
+            continue;
+        }
+        const bool opposite = (e.verdict == "faster" && c.verdict == "slower") || (e.verdict == "slower" && c.verdict == "faster");
+        s.opposite += opposite;
+        s.changed.push_back({e, c});
+    }
+    return s;
+}
+
+std::string stability_markdown(const verdict_stability& s, const std::string& earlier_name) {
+    std::ostringstream out;
+    out << "# Verdicts against an earlier run\n\nThe same comparisons in " << earlier_name << " and in this run: "
+        << s.both << " in both, " << s.held << " with the same verdict, " << s.changed.size() << " changed ("
+        << s.opposite << " from faster to slower or back).\n\n";
+    if (s.changed.empty()) return out.str();
+    out << "| scene | rays | query | A | B | earlier A / B | verdict | now A / B | verdict |\n"
+        << "|---|---|---|---|---|---:|---|---:|---|\n";
+    for (const verdict_change& v : s.changed)
+        out << "| " << v.now.scene << " | " << v.now.ray_set << " | " << v.now.query << " | " << v.now.a << " | "
+            << v.now.b << " | " << cell(v.earlier.ratio, "%.3f") << " | " << v.earlier.verdict << " | "
+            << cell(v.now.ratio, "%.3f") << " | " << v.now.verdict << " |\n";
+    return out.str();
+}
+
 std::vector<plot> spread_plot(const std::vector<std::vector<race_row>>& processes) {
     std::vector<plot> panels;
     std::map<std::string, std::size_t> panel_of;  // scene and ray set

@@ -73,6 +73,24 @@ std::vector<comparison> compare_rows(const std::vector<std::vector<race_row>>& p
 std::string comparisons_csv(const std::vector<comparison>& c);
 std::string comparisons_markdown(const std::vector<comparison>& c, const std::string& machine);
 
+// Reads back a compare.csv that comparisons_csv wrote; throws std::runtime_error naming the file and line
+// on anything else.
+std::vector<comparison> read_comparisons_csv(const std::filesystem::path& file);
+
+// The same comparisons in two runs of a race (an earlier compare.csv against this run's): how many verdicts
+// held. A verdict that held says the same in both; one that changed went between faster or slower and level;
+// an opposite one went from faster to slower or back (the claim rule should make those rare: each needs
+// every process of one run against every process of the other).
+struct verdict_change {
+    comparison earlier, now;
+};
+struct verdict_stability {
+    int both = 0, held = 0, opposite = 0;
+    std::vector<verdict_change> changed;  // opposite ones included
+};
+verdict_stability compare_verdicts(const std::vector<comparison>& earlier, const std::vector<comparison>& now);
+std::string stability_markdown(const verdict_stability& s, const std::string& earlier_name);
+
 // Runs this program (/proc/self/exe) with `args` (argv[1...]) as a child process whose standard output and
 // error go to `log`; waits for it and returns its exit status (128 + the signal's number if a signal ended it).
 int run_self(const std::vector<std::string>& args, const std::filesystem::path& log);
