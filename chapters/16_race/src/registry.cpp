@@ -51,11 +51,10 @@ accel_entry ch11_step(ch11::step s) {
 // Chapter 13: chapter 05's fast binned tree (or chapter 06's reinserted one) collapsed into a wide tree.
 accel_entry wide(std::string name, std::string description, int width, int block, ch13::collapse_method method,
                  bool reinserted = false, bool watertight = false,
-                 ch13::child_order order = ch13::child_order::collapsed, bool quantized = false, bool octant = false,
-                 bool indexed = false) {
+                 ch13::child_order order = ch13::child_order::collapsed, bool quantized = false, bool octant = false) {
     ch13::wide_config c;
     c.width = width, c.block = block, c.collapse.method = method, c.watertight = watertight, c.order = order;
-    c.quantized = quantized, c.octant_order = octant, c.indexed = indexed;
+    c.quantized = quantized, c.octant_order = octant;
     const ch04::bvh_builder source = reinserted
         ? ch04::bvh_builder([](std::span<const aabb> b, std::span<const vec3> centroids) {
               return ch06::build_refined_bvh(b, centroids, refined(ch06::start_tree::binned16, ch06::refine_method::reinsertion));
@@ -190,10 +189,6 @@ std::vector<accel_entry> registered_accels(const registry_options& o) {
         wide("ch13-bvh8-block8-quant", "as ch13-bvh8-block8, its nodes quantised: child boxes as bytes on a "
              "power-of-two grid per node, rounded outward (128-byte nodes instead of 256)", 8, 8,
              ch13::collapse_method::optimal, false, false, ch13::child_order::collapsed, true),
-        wide("ch13-bvh8-block8-indexed", "as ch13-bvh8-block8-octant, its leaves' test reading each lane's three "
-             "vertex indices and gathering the corners from the mesh's vertices (the compact leaf: 12 bytes a "
-             "triangle instead of 36; the full blocks kept beside it for the hits' ids)", 8, 8,
-             ch13::collapse_method::optimal, false, false, ch13::child_order::collapsed, false, true, true),
         wide("ch13-bvh16", "16-wide nodes (optimal collapse), blocks of 4", 16, 4, ch13::collapse_method::optimal),
         wide("ch13-bvh8-reinserted", "chapter 06's reinserted tree collapsed into 8-wide nodes (optimal), blocks of 4",
              8, 4, ch13::collapse_method::optimal, true),

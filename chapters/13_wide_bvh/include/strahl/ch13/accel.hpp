@@ -23,8 +23,6 @@ struct wide_config {
     bool quantized = false;        // nodes quantised to bytes (quantized_node.hpp): width 8, blocks of 8
     bool watertight = false;       // chapter 15's watertight test in the leaves (width 8 or 16, blocks of 4)
                                    // instead of Moeller-Trumbore
-    bool indexed = false;          // the compact leaf: the block test gathers the corners by index (block_test.hpp,
-                                   // index_block; width 8, blocks of 8)
 };
 
 // The widths this build runs with intrinsics (simd::native), for the programs' headers: "SSE2 4, AVX 8, ...".

@@ -28,15 +28,14 @@ struct ray_lanes {
     }
 };
 
-// Which lanes hit, for the first corners v0 and the edges e1, e2 of M triangles in lanes: the test itself.
+// Which lanes of block b the ray hits with t in (tmin, tmax); their t, u, v.
 template <int M>
-STRAHL_ALWAYS_INLINE inline simd::vmask<M> intersect_lanes(const simd::vfloat<M> (&v0)[3], const simd::vfloat<M> (&e1)[3],
-                                                           const simd::vfloat<M> (&e2)[3], const ray_lanes<M>& r,
+STRAHL_ALWAYS_INLINE inline simd::vmask<M> intersect_block(const triangle_block<M>& b, const ray_lanes<M>& r,
                                                            float tmin, float tmax, simd::vfloat<M>& t,
-                                                           simd::vfloat<M>& u, simd::vfloat<M>& v) {
+                                                             simd::vfloat<M>& u, simd::vfloat<M>& v) {
     using vf = simd::vfloat<M>;
-    const vf &e1x = e1[0], &e1y = e1[1], &e1z = e1[2];
-    const vf &e2x = e2[0], &e2y = e2[1], &e2z = e2[2];
+    const vf e1x = vf::load(b.e1[0]), e1y = vf::load(b.e1[1]), e1z = vf::load(b.e1[2]);
+    const vf e2x = vf::load(b.e2[0]), e2y = vf::load(b.e2[1]), e2z = vf::load(b.e2[2]);
     const vf &dx = r.dir[0], &dy = r.dir[1], &dz = r.dir[2];
     // Step 1, the determinant: p = d x e2, det = e1 . p (zero: parallel or degenerate; NaN passes here and
     // fails below, as in the scalar test).
@@ -45,7 +44,7 @@ STRAHL_ALWAYS_INLINE inline simd::vmask<M> intersect_lanes(const simd::vfloat<M>
     simd::vmask<M> hit = det != vf(0.0f);
     const vf inv_det = vf(1.0f) / det;
     // Step 2, the first barycentric: u = s . p / det with s = org - v0.
-    const vf sx = r.org[0] - v0[0], sy = r.org[1] - v0[1], sz = r.org[2] - v0[2];
+    const vf sx = r.org[0] - vf::load(b.v0[0]), sy = r.org[1] - vf::load(b.v0[1]), sz = r.org[2] - vf::load(b.v0[2]);
     const vf bu = (sx * px + sy * py + sz * pz) * inv_det;
     hit = hit & (bu >= vf(0.0f)) & (bu <= vf(1.0f));
     // Step 3, the second barycentric: v = d . q / det with q = s x e1.
@@ -57,57 +56,6 @@ STRAHL_ALWAYS_INLINE inline simd::vmask<M> intersect_lanes(const simd::vfloat<M>
     hit = hit & (bt > vf(tmin)) & (bt < vf(tmax));
     t = bt, u = bu, v = bv;
     return hit;
-}
-
-// Which lanes of block b the ray hits with t in (tmin, tmax); their t, u, v.
-template <int M>
-STRAHL_ALWAYS_INLINE inline simd::vmask<M> intersect_block(const triangle_block<M>& b, const ray_lanes<M>& r,
-                                                           float tmin, float tmax, simd::vfloat<M>& t,
-                                                           simd::vfloat<M>& u, simd::vfloat<M>& v) {
-    using vf = simd::vfloat<M>;
-    const vf v0[3] = {vf::load(b.v0[0]), vf::load(b.v0[1]), vf::load(b.v0[2])};
-    const vf e1[3] = {vf::load(b.e1[0]), vf::load(b.e1[1]), vf::load(b.e1[2])};
-    const vf e2[3] = {vf::load(b.e2[0]), vf::load(b.e2[1]), vf::load(b.e2[2])};
-    return intersect_lanes(v0, e1, e2, r, tmin, tmax, t, u, v);
-}
-
-// The compact leaf (an experiment, measured alone): M triangles as three vertex indices per lane into the
-// mesh's own vertex array, 12 bytes a triangle where triangle_block keeps 36, and no vertex twice. The test
-// gathers the corners and forms the edges as exercise 01.3 does (v1 - v0 and v2 - v0 in float: the same
-// bits as the stored edges).
-template <int M>
-struct alignas(64) index_block {
-    std::int32_t v[3][M];  // v[corner][lane]: 3 x the corner's index: its x in the vertex array (x, y, z floats)
-};
-
-template <int M>
-STRAHL_ALWAYS_INLINE inline simd::vmask<M> intersect_block_indexed(const index_block<M>& b, const float* xyz,
-                                                                   const ray_lanes<M>& r, float tmin, float tmax,
-                                                                   simd::vfloat<M>& t, simd::vfloat<M>& u,
-                                                                   simd::vfloat<M>& v) {
-    using vf = simd::vfloat<M>;
-    vf c[3][3];  // c[corner][axis]
-#if defined(__AVX2__)
-    if constexpr (M == 8 && simd::native<8>) {
-        for (int k = 0; k < 3; ++k) {
-            const __m256i at = _mm256_load_si256(reinterpret_cast<const __m256i*>(b.v[k]));
-            for (int a = 0; a < 3; ++a) c[k][a] = vf(_mm256_i32gather_ps(xyz + a, at, 4));
-        }
-    } else
-#endif
-    {
-        alignas(64) float g[3][3][M];
-        for (int k = 0; k < 3; ++k)
-            for (int l = 0; l < M; ++l) {
-                const float* p = xyz + b.v[k][l];
-                g[k][0][l] = p[0], g[k][1][l] = p[1], g[k][2][l] = p[2];
-            }
-        for (int k = 0; k < 3; ++k)
-            for (int a = 0; a < 3; ++a) c[k][a] = vf::load(g[k][a]);
-    }
-    vf v0[3], e1[3], e2[3];
-    for (int a = 0; a < 3; ++a) v0[a] = c[0][a], e1[a] = c[1][a] - v0[a], e2[a] = c[2][a] - v0[a];
-    return intersect_lanes(v0, e1, e2, r, tmin, tmax, t, u, v);
 }
 
 // The watertight test needs the corners themselves (v0 + e1 rounds: it is not v1): v[corner][axis][lane],

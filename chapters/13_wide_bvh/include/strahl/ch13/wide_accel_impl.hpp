@@ -21,10 +21,8 @@ namespace {
 // Watertight: the leaves' blocks tested by chapter 15's watertight test (on the corners, vertex_block),
 // else by Moeller-Trumbore (on the edges, triangle_block).
 // Node: wide_node<N>, or qnode<N> for the quantised tree (quantized_node.hpp).
-// Indexed: the block test reads index_block's vertex indices and the mesh's vertices (the compact leaf, an
-// experiment: the tree's own blocks stay too, for the hits' ids and the loose-triangle fallback).
-template <int N, int M, bool Watertight = false, class Node = wide_node<N>, bool Indexed = false>
-class wide_accel final : public per_ray_accel<wide_accel<N, M, Watertight, Node, Indexed>, wide_accel_base> {
+template <int N, int M, bool Watertight = false, class Node = wide_node<N>>
+class wide_accel final : public per_ray_accel<wide_accel<N, M, Watertight, Node>, wide_accel_base> {
 public:
     wide_accel(std::string name, ch04::mesh_bvh_builder builder, const wide_config& c)
         : name_(std::move(name)), builder_(std::move(builder)), config_(c.collapse), order_(c.order),
@@ -57,20 +55,6 @@ public:
                         for (int a = 0; a < 3; ++a) corners_[k].v[c][a][lane] = p[c][a];
                 }
         }
-        index_.clear(), xyz_.clear();
-        if constexpr (Indexed) {
-            index_.resize(tree_.blocks.size());
-            for (std::size_t k = 0; k < index_.size(); ++k)
-                for (int lane = 0; lane < M; ++lane) {
-                    const uvec3 t = s.mesh.indices[tree_.blocks[k].id[lane]];
-                    for (int c = 0; c < 3; ++c) {
-                        if (t[c] > 0x7fffffffu / 3) throw std::length_error("wide BVH, indexed leaves: over 2^31 / 3 vertices");
-                        index_[k].v[c][lane] = std::int32_t(3 * t[c]);
-                    }
-                }
-            xyz_.reserve(3 * s.mesh.positions.size());
-            for (const vec3& p : s.mesh.positions) xyz_.insert(xyz_.end(), {p.x, p.y, p.z});
-        }
         set_ = std::make_unique<block_lane_set<N, M, Watertight>>(tree_, corners_, s.mesh);
     }
     std::optional<double> sah_cost() const override {
@@ -79,8 +63,7 @@ public:
     }
     // Everything it keeps: the wide tree and its blocks, the watertight test's corners, the loose triangles.
     std::size_t memory_bytes() const override {
-        return tree_.memory_bytes() + (set_ ? set_->memory_bytes() : 0) + corners_.size() * sizeof(vertex_block<M>) +
-               index_.size() * sizeof(index_block<M>) + xyz_.size() * sizeof(float);
+        return tree_.memory_bytes() + (set_ ? set_->memory_bytes() : 0) + corners_.size() * sizeof(vertex_block<M>);
     }
 
     // tree_query.hpp's rules (loose primitives, rays no tree can place) around the wide walk
@@ -115,9 +98,6 @@ private:
                       simd::vfloat<M>& u, simd::vfloat<M>& v) {
             if constexpr (Watertight)
                 return intersect_block_watertight(corners_[std::size_t(&b - tree_.blocks.data())], lanes, tmin, tmax, t, u, v);
-            else if constexpr (Indexed)
-                return intersect_block_indexed(index_[std::size_t(&b - tree_.blocks.data())], xyz_.data(), lanes, tmin,
-                                               tmax, t, u, v);
             else return intersect_block(b, lanes, tmin, tmax, t, u, v);
         };
     }
@@ -130,8 +110,6 @@ private:
     bool octant_ = false;
     wide_bvh<N, M, Node> tree_;
     std::vector<vertex_block<M>> corners_;  // watertight only: the corners of every block
-    std::vector<index_block<M>> index_;     // indexed only: every block's vertex indices ...
-    std::vector<float> xyz_;                // ... into the mesh's vertices
     std::unique_ptr<block_lane_set<N, M, Watertight>> set_;  // the loose triangles and brute force's fallback
 };
 
@@ -154,8 +132,6 @@ std::unique_ptr<wide_accel_base> make_accel_from_mesh(std::string name, ch04::me
     const int key = c.width * 100 + c.block;
     if (c.octant_order && c.width != 8)
         throw std::invalid_argument("wide BVH: the order per ray octant is kept by nodes of 8");
-    if (c.indexed && (key != 808 || c.watertight || c.quantized))
-        throw std::invalid_argument("wide BVH: the indexed leaves are built for nodes of 8 with blocks of 8, float nodes");
     if (c.quantized && (key != 808 || c.watertight))
         throw std::invalid_argument("wide BVH: quantised nodes are built for nodes of 8 with blocks of 8, Moeller-Trumbore");
     if (c.watertight) {
@@ -170,7 +146,6 @@ std::unique_ptr<wide_accel_base> make_accel_from_mesh(std::string name, ch04::me
     case 404: return std::make_unique<wide_accel<4, 4>>(std::move(name), std::move(builder), c);
     case 804: return std::make_unique<wide_accel<8, 4>>(std::move(name), std::move(builder), c);
     case 808:
-        if (c.indexed) return std::make_unique<wide_accel<8, 8, false, wide_node<8>, true>>(std::move(name), std::move(builder), c);
         if (c.quantized) return std::make_unique<wide_accel<8, 8, false, qnode<8>>>(std::move(name), std::move(builder), c);
         return std::make_unique<wide_accel<8, 8>>(std::move(name), std::move(builder), c);
     case 1604: return std::make_unique<wide_accel<16, 4>>(std::move(name), std::move(builder), c);
