@@ -263,6 +263,13 @@ if [[ $nn == 11 ]]; then
     runs "--from-race" 0 "$program" --from-race "$race_csv" --out "$dir/from_race"
     contains "$dir/from_race/staircase.svg" "ch13-bvh16" "--from-race's plot"
     contains "$dir/from_race/staircase.svg" "type-sorted" "--from-race's plot"
+    # staircase.csv: the plot's figures, step 1 at x1 on every ray set, each row its speed over step 1's.
+    contains "$dir/from_race/staircase.csv" "scene,structure,rays,mrays_s,x_step1" "--from-race's table"
+    bad=$(awk -F, 'NR > 1 { k = $1 "," $3; if (!(k in first)) first[k] = $4;
+                   if ($2 == "virtual" && $5 != 1) print; d = $4 / first[k] - $5; if (d > 1e-4 || d < -1e-4) print }' \
+          "$dir/from_race/staircase.csv")
+    [[ -z $bad ]] || fail "staircase.csv: x_step1 is not each speed over step 1's: $bad"
+    [[ $(grep -c ',virtual,' "$dir/from_race/staircase.csv") -ge 3 ]] || fail "staircase.csv: no step 1 rows"
     runs "--from-race of a foreign file" 1 "$program" --from-race "$out/steps.csv" --out "$dir/from_race2"
     contains "$dir/err" "is not a race.csv written by the race" "--from-race of a foreign file"
 fi

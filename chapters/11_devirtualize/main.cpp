@@ -175,6 +175,24 @@ void write_staircase(const std::vector<step_row>& steps, const fs::path& svg, co
     write_svg(svg, to_svg(c, 860, 460));
 }
 
+// staircase.csv: the staircase's figures, a row per scene, structure and ray set: its speed (closest hit on
+// primary and diffuse rays, any hit on shadow rays) and that speed over step 1's on the same rays.
+std::string staircase_csv(const std::vector<step_row>& steps) {
+    std::ostringstream out;
+    out << "scene,structure,rays,mrays_s,x_step1\n";
+    for (const step_row& r : steps) {
+        const step_row* base = nullptr;
+        for (const step_row& b : steps)
+            if (!base && b.scene == r.scene) base = &b;
+        const double speed[] = {r.primary, r.diffuse, r.shadow}, first[] = {base->primary, base->diffuse, base->shadow};
+        const char* rays[] = {"primary", "diffuse", "shadow"};
+        for (int k = 0; k < 3; ++k)
+            out << csv_field(r.scene) << ',' << csv_field(r.step) << ',' << rays[k] << ',' << speed[k] << ','
+                << (first[k] > 0 ? speed[k] / first[k] : 0.0) << '\n';
+    }
+    return out.str();
+}
+
 // --from-race: the race's medians across processes (race.csv of race --processes N), its ch11 rows and,
 // where present, ch13-bvh16 and embree-medium beside them. Closest-hit speed for primary and diffuse rays,
 // any-hit speed for shadow rays.
@@ -246,7 +264,7 @@ int run(int argc, const char* const* argv) {
         .option("glossy-samples", "S", "16", "reflection rays per rough-mirror hit, 1 to 64")
         .output_options("write steps.csv, render.csv, staircase.svg and render.png into DIR/ "
                                    "(default out/11_devirtualize/)")
-        .option("from-race", "CSV", "", "only draw staircase.svg from a race's medians (race.csv of race --processes N "
+        .option("from-race", "CSV", "", "only draw staircase.svg and write its figures, staircase.csv, from a race's medians (race.csv of race --processes N "
                                          "with the ch11 rows first; ch13-bvh16 and embree-medium where present)")
         .flag("quick", "the teapot in a stadium only, 64 x 48 rays, a 32 x 32 render, one repeat")
         .option("step-report", "DIR", "", "only exercise 11.4's report: your prediction beside what a race run with "
@@ -264,9 +282,11 @@ int run(int argc, const char* const* argv) {
         const std::vector<step_row> rows = read_race(args.get("from-race"));
         const fs::path folder = args.has("out") ? fs::path(args.get("out")) : fs::path("out/11_devirtualize");
         prepare_output(folder / "staircase.svg", args.has("out"), args.has("force"));
+        prepare_output(folder / "staircase.csv", args.has("out"), args.has("force"));
         write_staircase(rows, folder / "staircase.svg", "the race's medians, one thread");
-        std::printf("wrote %s from %zu rows of %s\n", (folder / "staircase.svg").string().c_str(), rows.size(),
-                    args.get("from-race").c_str());
+        write_text(folder / "staircase.csv", staircase_csv(rows));
+        std::printf("wrote %s and staircase.csv from %zu rows of %s\n", (folder / "staircase.svg").string().c_str(),
+                    rows.size(), args.get("from-race").c_str());
         return 0;
     }
     const bool quick = args.has("quick");
