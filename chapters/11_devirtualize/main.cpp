@@ -140,9 +140,11 @@ void write_outputs(const std::vector<step_row>& steps, const std::vector<render_
             << ',' << r.differing << '\n';
     write_text(folder / "steps.csv", with_machine(csv.str(), this_machine(parallel_threads())));
     std::ostringstream rcsv;
-    rcsv << "renderer,mrays_s,rays,seconds,same_image\n";
+    // x_virtual: each renderer's speed over the first's (chapter 01's virtual materials).
+    rcsv << "renderer,mrays_s,rays,seconds,same_image,x_virtual\n";
     for (const render_row& r : renders)
-        rcsv << r.renderer << ',' << r.mrays << ',' << r.rays << ',' << r.seconds << ',' << (r.same_image ? 1 : 0) << '\n';
+        rcsv << r.renderer << ',' << r.mrays << ',' << r.rays << ',' << r.seconds << ',' << (r.same_image ? 1 : 0) << ','
+             << (renders.front().mrays > 0 ? r.mrays / renders.front().mrays : 0.0) << '\n';
     write_text(folder / "render.csv", with_machine(rcsv.str(), this_machine(parallel_threads())));
     write_staircase(steps, folder / "staircase.svg", "same tree, same rays, one thread");
 }
