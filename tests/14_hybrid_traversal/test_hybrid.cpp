@@ -29,11 +29,10 @@ std::vector<hybrid_config> all_configs(int width) {
             out.push_back({k, 4, k / 4, width, t});
         }
     for (const int k : {8, 16}) out.push_back({k, 4, k / 4, width, automatic, false, ch13::child_order::collapsed});
-    for (const int k : {8, 16})
-        for (const int t : {1, automatic, k}) {  // the lone rays' closest hit in the octant's order
-            out.push_back({k, 4, k / 4, width, t});
-            out.back().octant_order = true;
-        }
+    for (const int t : {1, automatic, 16}) {  // the lone rays' closest hit in the octant's order (16 lanes)
+        out.push_back({16, 4, 4, width, t});
+        out.back().octant_order = true;
+    }
     return out;
 }
 
@@ -194,4 +193,7 @@ TEST_CASE("ch14 hybrid: configurations not built are refused, naming what is", "
     CHECK_THROWS_WITH(make_accel("x", {16, 8, 2, 0, 0}), Catch::Contains("built: 8 lanes 4x2"));
     CHECK_THROWS_WITH(make_accel("x", {16, 4, 4, 0, 17}), Catch::Contains("threshold 17"));
     CHECK_THROWS_WITH(make_accel("x", {8, 4, 2, 0, -2}), Catch::Contains("not in 0..8"));
+    hybrid_config octant8{8, 4, 2, 0, automatic};
+    octant8.octant_order = true;
+    CHECK_THROWS_WITH(make_accel("x", octant8), Catch::Contains("octant order is built for 16 lanes"));
 }

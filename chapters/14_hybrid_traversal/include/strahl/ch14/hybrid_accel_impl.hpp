@@ -15,23 +15,24 @@ namespace {
 
 // What chapter 12's packet tracer asks of a policy: the hooks of one packet's walk (its threshold fixed, or
 // estimated from the packet), and that per-ray figures say where rays left their packets.
+template <bool Octant>
 struct hybrid_policy {
     static constexpr bool departures = true;
     int threshold = automatic;
     threshold_rule rule;
     bool strict = false;  // hybrid_config::strict
     ch13::child_order order = ch13::child_order::leaves_then_area;  // hybrid_config::order
-    bool octant = false;  // hybrid_config::octant_order
+    static constexpr bool octant = Octant;  // hybrid_config::octant_order (packet_accel orders the nodes)
     template <bool Any, bool Coherent, int K, int N, int M, class Stats>
-    hybrid_hooks<Any, Coherent, K, N, M, Stats> hooks(const ch13::wide_bvh<N, M>& tree, ch12::ray_packet<K, 1>& p,
-                                                      Stats& stats) const {
+    hybrid_hooks<Any, Coherent, K, N, M, Stats, Octant> hooks(const ch13::wide_bvh<N, M>& tree,
+                                                              ch12::ray_packet<K, 1>& p, Stats& stats) const {
         const int t = threshold >= 0 ? threshold : packet_threshold(packet_coherence(p), K, rule);
-        return {tree, p, stats, t, strict, order != ch13::child_order::collapsed, octant};
+        return {tree, p, stats, t, strict, order != ch13::child_order::collapsed};
     }
 };
 
-template <int K>
-using hybrid_accel = ch12::packet_accel<ch12::walk_kind::wide, K, 1, hybrid_policy>;
+template <int K, bool Octant = false>
+using hybrid_accel = ch12::packet_accel<ch12::walk_kind::wide, K, 1, hybrid_policy<Octant>>;
 
 }  // namespace
 
@@ -40,7 +41,11 @@ std::unique_ptr<ch12::packet_accel_base> make_accel(std::string name, const hybr
         throw std::invalid_argument("hybrid tracer: threshold " + std::to_string(c.threshold) + " is not in 0.." +
                                     std::to_string(c.lanes) + " (or automatic)");
     const ch12::packet_config pc{ch12::walk_kind::wide, c.lanes, c.tile_w, c.tile_h, c.image_width, c.builder};
-    const hybrid_policy policy{c.threshold, {}, c.strict, c.order, c.octant_order};
+    const hybrid_policy<false> policy{c.threshold, {}, c.strict, c.order};
+    if (c.octant_order && !(c.lanes == 16 && c.tile_w == 4 && c.tile_h == 4))
+        throw std::invalid_argument("hybrid tracer: the lone rays' octant order is built for 16 lanes with 4x4 tiles");
+    if (c.octant_order)
+        return std::make_unique<hybrid_accel<16, true>>(std::move(name), pc, hybrid_policy<true>{c.threshold, {}, c.strict, c.order});
     if (c.lanes == 8 && c.tile_w == 4 && c.tile_h == 2) return std::make_unique<hybrid_accel<8>>(std::move(name), pc, policy);
     if (c.lanes == 16 && c.tile_w == 4 && c.tile_h == 4) return std::make_unique<hybrid_accel<16>>(std::move(name), pc, policy);
     throw std::invalid_argument("hybrid tracer: " + std::to_string(c.lanes) + " lanes with " + std::to_string(c.tile_w) +
