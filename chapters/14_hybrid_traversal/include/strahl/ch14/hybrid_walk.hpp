@@ -71,7 +71,7 @@ struct nearest_push {
 // Octant: the lone closest-hit walk takes each node's children in its order for the ray's octant
 // (hybrid_config::octant_order), else by entry distance. A template parameter, not a flag: with both walks
 // compiled into alone() behind a runtime flag, the tracer that never takes the octant's walk ran 10 to 15 %
-// slower on the stadium's diffuse rays (the compiler inlined the nearest-first walk less well).
+// slower on the stadium's diffuse rays, with the same counters (the code the compiler made; NOTES.md).
 template <bool Any, bool Coherent, int K, int N, int M, class Stats, bool Octant = false>
 struct hybrid_hooks {
     const ch13::wide_bvh<N, M>& tree;
