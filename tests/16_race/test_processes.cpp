@@ -261,4 +261,7 @@ TEST_CASE("ch16 processes: verdicts held against an earlier run's compare.csv", 
     std::ofstream(dir / "bad.csv") << "scene,rays,query,a,b,processes,ratio_median,ratio_min,ratio_max,verdict,ratios\n"
                                    << "teapot,primary,nearest,A,B,5,1,1,1,level,1 1 1 1 1\n";
     CHECK_THROWS_WITH(read_comparisons_csv(dir / "bad.csv"), Catch::Contains("line 2") && Catch::Contains("nearest"));
+    std::ofstream(dir / "bad_ratio.csv") << compare_csv_header << "\n"
+                                         << "teapot,primary,any,A,B,5,1,1,1,level,1 1 x1 1 1\n";
+    CHECK_THROWS_WITH(read_comparisons_csv(dir / "bad_ratio.csv"), Catch::Contains("'x1'"));
 }

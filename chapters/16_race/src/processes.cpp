@@ -3,6 +3,7 @@
 #include "strahl/timer.hpp"  // median
 #include <algorithm>
 #include <cerrno>
+#include <cstdlib>
 #include <cstdio>
 #include <cstring>
 #include <fcntl.h>
@@ -209,7 +210,7 @@ std::vector<comparison> compare_rows(const std::vector<std::vector<race_row>>& p
 
 std::string comparisons_csv(const std::vector<comparison>& cs) {
     std::ostringstream out;
-    out << "scene,rays,query,a,b,processes,ratio_median,ratio_min,ratio_max,verdict,ratios\n";
+    out << compare_csv_header << '\n';
     for (const comparison& c : cs) {
         out << csv_field(c.scene) << ',' << csv_field(c.ray_set) << ',' << c.query << ',' << csv_field(c.a) << ','
             << csv_field(c.b) << ',' << c.ratios.size() << ',' << num(c.ratio.median) << ','
@@ -235,8 +236,7 @@ std::string comparisons_markdown(const std::vector<comparison>& cs, const std::s
 
 std::vector<comparison> read_comparisons_csv(const std::filesystem::path& file) {
     std::vector<comparison> out;
-    const std::string header = "scene,rays,query,a,b,processes,ratio_median,ratio_min,ratio_max,verdict,ratios";
-    for (const csv_row& c : read_csv(file, header, "a compare.csv written by the race (--compare)")) {
+    for (const csv_row& c : read_csv(file, compare_csv_header, "a compare.csv written by the race (--compare)")) {
         comparison k{c.cells[0], c.cells[1], c.cells[2], c.cells[3], c.cells[4], {}, {}, {}};
         if (k.query != "closest" && k.query != "any")
             throw std::runtime_error(file.string() + ", line " + std::to_string(c.line) + ": query '" + k.query +
@@ -245,7 +245,13 @@ std::vector<comparison> read_comparisons_csv(const std::filesystem::path& file) 
         k.ratio.median = csv_number(file, c, 6), k.ratio.min = csv_number(file, c, 7), k.ratio.max = csv_number(file, c, 8);
         k.verdict = c.cells[9];
         std::istringstream ratios(c.cells[10]);
-        for (std::string r; ratios >> r;) k.ratios.push_back(std::strtod(r.c_str(), nullptr));
+        for (std::string r; ratios >> r;) {
+            char* end = nullptr;
+            k.ratios.push_back(std::strtod(r.c_str(), &end));
+            if (end != r.c_str() + r.size())
+                throw std::runtime_error(file.string() + ", line " + std::to_string(c.line) + ": ratio '" + r +
+                                         "' is not a number");
+        }
         out.push_back(std::move(k));
     }
     return out;

@@ -70,6 +70,8 @@ std::vector<comparison> compare_rows(const std::vector<std::vector<race_row>>& p
 
 // compare.csv: scene, rays, query, a, b, processes, ratio_median, ratio_min, ratio_max, verdict, then each
 // process's ratio; and the same as a Markdown table.
+inline constexpr const char* compare_csv_header =
+    "scene,rays,query,a,b,processes,ratio_median,ratio_min,ratio_max,verdict,ratios";
 std::string comparisons_csv(const std::vector<comparison>& c);
 std::string comparisons_markdown(const std::vector<comparison>& c, const std::string& machine);
 
