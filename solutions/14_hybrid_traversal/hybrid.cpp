@@ -41,8 +41,8 @@ coherence packet_coherence(const ch12::ray_packet<K, 1>& p) {
     for (int k = 0; k < K; ++k) on[k] = (active >> k) & 1u ? 1.0f : 0.0f;
     const simd::vmask<K> live = vf(0.0f) < vf::load(on);
     const vf x = vf::load(p.dir[0]), y = vf::load(p.dir[1]), z = vf::load(p.dir[2]);
-    const vf len = simd::sqrt(x * x + y * y + z * z);
-    const vf unit[3] = {x / len, y / len, z / len};
+    const vf scale = vf(1.0f) / simd::sqrt(x * x + y * y + z * z);  // one divide, not three
+    const vf unit[3] = {x * scale, y * scale, z * scale};
     for (int a = 0; a < 3; ++a) {
         const unsigned down = simd::movemask(simd::as_int(unit[a]) < simd::vint<K>(0)) & active;
         c.one_octant = c.one_octant && (down == 0 || down == active);

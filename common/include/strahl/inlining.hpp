@@ -3,6 +3,8 @@
 // STRAHL_FLATTEN: [[gnu::flatten]] (every call inside the function inlined, recursively), where chapters 11
 // and 13 measured it to pay. STRAHL_ALWAYS_INLINE: [[gnu::always_inline]], on the small steps of the walks
 // (a slab test, a triangle test, a push) that the walks' speed needs inlined into their loops.
+// STRAHL_INLINE_LAMBDA: the same for a lambda, written after its parameter list (g++'s attribute form, which
+// reaches the lambda's call operator).
 //
 // Under AddressSanitizer both are nothing. Forcing sanitizer-instrumented code inline made single translation
 // units compile for minutes, the longest poles of the sanitizer build (ASan + UBSan at -O1, g++ 12: chapter
@@ -14,7 +16,9 @@
 #if defined(__SANITIZE_ADDRESS__)
 #define STRAHL_FLATTEN
 #define STRAHL_ALWAYS_INLINE
+#define STRAHL_INLINE_LAMBDA
 #else
 #define STRAHL_FLATTEN [[gnu::flatten]]
 #define STRAHL_ALWAYS_INLINE [[gnu::always_inline]]
+#define STRAHL_INLINE_LAMBDA __attribute__((always_inline))
 #endif

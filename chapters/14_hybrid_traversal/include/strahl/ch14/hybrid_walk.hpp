@@ -86,13 +86,18 @@ struct hybrid_hooks {
         return rays_box<Coherent>(r, bmin, bmax, octant, entry);
     }
 
-    bool leave(unsigned lanes, std::uint32_t ref) {
+    // The check runs at every node and stays in the walk; the hand-off is out of line (a call the walk pays
+    // for only where rays leave).
+    STRAHL_ALWAYS_INLINE bool leave(unsigned lanes, std::uint32_t ref) {
         if (std::popcount(lanes) > threshold) return false;
+        leave_now(lanes, ref);
+        return true;
+    }
+    [[gnu::noinline]] void leave_now(unsigned lanes, std::uint32_t ref) {
         hand_off<Any>(p, lanes, [&](int k, lone_ray& l) {
             if constexpr (requires { stats.left(k); }) stats.left(k);
             alone(k, l, ref);
         });
-        return true;
     }
 
     // Lane k's ray through `ref` alone: chapter 13's walk started there, its leaves' blocks by chapter
@@ -101,7 +106,7 @@ struct hybrid_hooks {
         const ray_node_slab<N> s(p, k, l.r.dir);
         const ch13::ray_lanes<M> lanes(l.r);
         ray& r = l.r;
-        const auto leaf = [&](std::uint32_t leaf_ref) {
+        const auto leaf = [&](std::uint32_t leaf_ref) STRAHL_INLINE_LAMBDA {
             const ch13::triangle_block<M>* b = &tree.blocks[ch13::leaf_first(leaf_ref)];
             for (std::uint32_t n = ch13::leaf_blocks(leaf_ref); n-- > 0; ++b) {
                 stats.prim_test(M);
