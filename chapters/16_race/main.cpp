@@ -4,6 +4,7 @@
 #include "strahl/procedural.hpp"
 #include "strahl/program.hpp"
 #include "strahl/huge_pages.hpp"
+#include "strahl/parallel.hpp"
 #include "strahl/progress.hpp"
 #include "strahl/race/brute_force.hpp"
 #include "strahl/race/embree_accel.hpp"
@@ -33,8 +34,10 @@ std::vector<std::string> split(const std::string& s) {
     return out;
 }
 
-std::string machine_name() {
-    return this_machine(1).cpu + ", " + std::to_string(std::thread::hardware_concurrency()) + " hardware threads; " +
+// cpu: the CPU one thread's timings are pinned to (-1: none).
+std::string machine_name(int cpu) {
+    return this_machine(1).cpu + ", " + std::to_string(std::thread::hardware_concurrency()) + " hardware threads" +
+           (cpu >= 0 ? " (one thread's timings on CPU " + std::to_string(cpu) + ")" : std::string()) + "; " +
            embree_configuration().summary();
 }
 
@@ -68,7 +71,7 @@ image primary_image(const scene& s, std::span<const ray> rays, const std::vector
 // new ones follow them.
 int race_processes(int n, bool more, bool reverse, int argc, const char* const* argv,
                    const std::filesystem::path& out, const std::filesystem::path& cache_dir,
-                   const std::vector<std::pair<std::string, std::string>>& compare, int threads,
+                   const std::vector<std::pair<std::string, std::string>>& compare, int threads, int cpu,
                    const std::vector<comparison>* against, const std::string& against_name) {
     // Each child gets this command line without --more, --reverse, --compare and --against, and its own --out.
     std::vector<std::string> base;
@@ -115,7 +118,7 @@ int race_processes(int n, bool more, bool reverse, int argc, const char* const* 
     std::vector<race_row> rows;
     for (const combined_row& c : combined) rows.push_back(c.row);
     print_table(std::cout, rows);
-    const std::string machine = machine_name();
+    const std::string machine = machine_name(cpu);
     std::ofstream(out / "race.csv") << to_csv(rows, this_machine(threads));
     std::ofstream(out / "race.md") << to_markdown(rows, machine, n);
     std::ofstream(out / "spread.md") << spread_markdown(combined, n, machine);
@@ -184,6 +187,9 @@ int run(int argc, const char* const* argv) {
                                           "slower: behind in every one; else level); writes DIR/compare.csv and compare.md")
         .option("against", "CSV", "", "with --compare: an earlier run's compare.csv; writes DIR/verdicts.md, how many of "
                                       "the verdicts both runs give held, and the ones that changed")
+        .option("cpu", "N", "", "with one thread, time every build and query on CPU N alone (default: the "
+                                "lowest-numbered CPU the race may use, the same in every process; none: wherever the "
+                                "system puts it)")
         .flag("plain-pages", "the course's builds allocate without advice to the kernel (no huge pages, no "
                              "faulting in at once; strahl/huge_pages.hpp): what the advice changes")
         .flag("quick", "built-in scenes only, 96x72 rays, 3 repeats: what ./course run runs");
@@ -198,6 +204,13 @@ int run(int argc, const char* const* argv) {
     rules.repeats = args.has("repeats") ? args.get_int("repeats") : quick ? 3 : 5;
     rules.budget_s = args.has("budget") ? args.get_double("budget") : quick ? 2.0 : 4.0;
     rules.threads = threads;
+    if (args.has("cpu") && args.get("cpu") == "none") rules.cpu = -1;
+    else if (args.has("cpu")) {
+        rules.cpu = args.get_int("cpu");
+        if (!cpu_allowed(rules.cpu))
+            throw usage_error("--cpu " + args.get("cpu") + ": not a CPU this process may run on (none: not pinned)");
+    } else rules.cpu = first_allowed_cpu();
+    if (threads > 1) rules.cpu = -1;  // threads spread over the CPUs as the system places them
     if (rules.repeats < 1 || rules.budget_s <= 0.0) throw usage_error("--repeats and --budget must be positive");
     const double cache_limit_mb = args.get_double("cache-limit");
     if (!(cache_limit_mb >= 0.0)) throw usage_error("--cache-limit must be a number of megabytes >= 0");
@@ -257,7 +270,7 @@ int run(int argc, const char* const* argv) {
     const auto started = std::filesystem::file_time_type::clock::now();
     if (processes > 1 || args.has("more"))
         return race_processes(processes, args.has("more"), args.has("reverse"), argc, argv, out, cache_dir, compare,
-                              threads, args.has("against") ? &against : nullptr,
+                              threads, rules.cpu, args.has("against") ? &against : nullptr,
                               args.has("against") ? args.get("against") : std::string());
 
     std::vector<ray_kind> kinds;
@@ -268,7 +281,7 @@ int run(int argc, const char* const* argv) {
     else entries = registered_accels(reg);
     if (args.has("reverse")) std::reverse(entries.begin(), entries.end());
     if (!embree_available()) std::cout << "Embree 3 was not found at build time: the race runs without it.\n";
-    else std::cout << "machine: " << machine_name() << " (Embree's queries run with flush-to-zero and "
+    else std::cout << "machine: " << machine_name(rules.cpu) << " (Embree's queries run with flush-to-zero and "
                    << "denormals-are-zero set, as its documentation asks)\n";
     if (args.has("plain-pages")) std::cout << "builds without page advice (--plain-pages)\n";
     std::cout << "race: " << w << "x" << h << " rays per set, " << threads << " thread" << (threads > 1 ? "s" : "")
@@ -374,7 +387,7 @@ int run(int argc, const char* const* argv) {
     }
     add_embree_ratios(rows);
     print_table(std::cout, rows);
-    const std::string machine = machine_name();
+    const std::string machine = machine_name(rules.cpu);
     std::ofstream(out / "race.csv") << to_csv(rows, this_machine(threads));
     std::ofstream(out / "race.md") << to_markdown(rows, machine);
     write_plots(out, rows);

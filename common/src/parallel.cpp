@@ -1,6 +1,9 @@
 // strahl/parallel.hpp's loops over TBB.
 #include "strahl/parallel.hpp"
 #include <algorithm>
+#include <sched.h>
+#include <stdexcept>
+#include <string>
 #include <tbb/blocked_range.h>
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
@@ -43,5 +46,39 @@ thread_limit::thread_limit(int n) {
 }
 
 thread_limit::~thread_limit() = default;
+
+struct pinned_thread::saved {
+    cpu_set_t before;
+};
+
+pinned_thread::pinned_thread(int cpu) {
+    if (cpu < 0) return;
+    if (!cpu_allowed(cpu)) throw std::invalid_argument("CPU " + std::to_string(cpu) + " is not one this process may run on");
+    auto s = std::make_unique<saved>();
+    if (sched_getaffinity(0, sizeof s->before, &s->before) != 0) return;
+    cpu_set_t one;
+    CPU_ZERO(&one);
+    CPU_SET(cpu, &one);
+    if (sched_setaffinity(0, sizeof one, &one) == 0) saved_ = std::move(s);
+}
+
+pinned_thread::~pinned_thread() {
+    if (saved_) sched_setaffinity(0, sizeof saved_->before, &saved_->before);
+}
+
+int first_allowed_cpu() {
+    cpu_set_t set;
+    if (sched_getaffinity(0, sizeof set, &set) != 0) return 0;
+    for (int c = 0; c < CPU_SETSIZE; ++c)
+        if (CPU_ISSET(c, &set)) return c;
+    return 0;
+}
+
+bool cpu_allowed(int cpu) {
+    if (cpu < 0 || cpu >= CPU_SETSIZE) return false;
+    cpu_set_t set;
+    if (sched_getaffinity(0, sizeof set, &set) != 0) return false;
+    return CPU_ISSET(cpu, &set);
+}
 
 }  // namespace strahl

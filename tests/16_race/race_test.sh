@@ -2,7 +2,8 @@
 # The race end to end, small: --help, a refused option, a tiny run writing its tables, plots and scene image
 # with 0 rays differing from brute force; a second run reading brute force's answers from the reference
 # cache and giving the same answers; a tampered cache file traced again and replaced; --no-cache neither
-# reading nor writing the cache; --processes 2 combining two fresh processes; a failing process; a scene
+# reading nor writing the cache; --cpu pinning one thread's timings (and refusing a CPU it may not use);
+# --processes 2 combining two fresh processes; a failing process; a scene
 # file that is not there, refused before anything starts.
 # Usage: race_test.sh PATH/TO/race SCRATCH_FOLDER
 set -euo pipefail
@@ -51,6 +52,14 @@ runs "tampered cache" 0 "$race" "${tiny[@]}" --out "$out"
 contains "$dir/out" "does not match the checksum in its name" "tampered cache"
 contains "$dir/out" "1 stale files replaced" "tampered cache"
 [[ $(ls "$out/reference_cache" | wc -l) -eq 5 ]] || fail "tampered cache: the cache should hold 5 files again"
+
+# One thread's timings pinned to a CPU, named in the machine line; a CPU the race may not use refused.
+runs "--cpu" 0 "$race" "${tiny[@]}" --out "$dir/pinned" --cpu 0
+contains "$dir/out" "one thread's timings on CPU 0" "--cpu 0"
+runs "--cpu none" 0 "$race" "${tiny[@]}" --out "$dir/pinned" --cpu none
+if grep -q "timings on CPU" "$dir/out"; then fail "--cpu none: the machine line names a CPU"; fi
+runs "--cpu 99999" 2 "$race" "${tiny[@]}" --out "$dir/pinned" --cpu 99999
+contains "$dir/err" "--cpu 99999: not a CPU this process may run on" "--cpu 99999"
 
 runs "--no-cache" 0 "$race" "${tiny[@]}" --out "$dir/fresh" --no-cache
 [[ ! -e $dir/fresh/reference_cache ]] || fail "--no-cache wrote a cache"

@@ -1,5 +1,6 @@
 // Unit tests of common/'s core: boxes, camera, random numbers, sampling, counters, timing, progress bar and
 // parallel tiles (the command line, the output rule, STRAHL_TODO and CSV reading: test_program.cpp).
+#include <sched.h>
 #include <catch2/catch.hpp>
 #include "strahl/aabb.hpp"
 #include "strahl/camera.hpp"
@@ -299,4 +300,31 @@ TEST_CASE("parallel_for_tiles covers every pixel exactly once, with stable tile 
     std::atomic<int> total{0};
     parallel_for_chunks(1000, 10, [&](std::size_t b, std::size_t e) { total += int(e - b); });
     CHECK(total == 1000);
+}
+
+TEST_CASE("pinned_thread keeps the thread on one CPU and gives back the CPUs it had", "[parallel]") {
+    cpu_set_t before;
+    REQUIRE(sched_getaffinity(0, sizeof before, &before) == 0);
+    const int cpu = first_allowed_cpu();
+    CHECK(cpu_allowed(cpu));
+    CHECK_FALSE(cpu_allowed(-1));
+    CHECK_FALSE(cpu_allowed(CPU_SETSIZE));
+    {
+        const pinned_thread pin(cpu);
+        cpu_set_t now;
+        REQUIRE(sched_getaffinity(0, sizeof now, &now) == 0);
+        CHECK(CPU_COUNT(&now) == 1);
+        CHECK(CPU_ISSET(cpu, &now));
+        CHECK(sched_getcpu() == cpu);
+    }
+    cpu_set_t after;
+    REQUIRE(sched_getaffinity(0, sizeof after, &after) == 0);
+    CHECK(CPU_EQUAL(&before, &after));
+    {
+        const pinned_thread none(-1);  // changes nothing
+        cpu_set_t now;
+        REQUIRE(sched_getaffinity(0, sizeof now, &now) == 0);
+        CHECK(CPU_EQUAL(&before, &now));
+    }
+    CHECK_THROWS_AS(pinned_thread(CPU_SETSIZE + 5), std::invalid_argument);
 }

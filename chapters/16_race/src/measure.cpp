@@ -13,6 +13,7 @@ bool bits_equal(float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 // quarter of the budget counts as the first timed run (slow structures on big scenes run once).
 template <class Run>
 std::vector<double> time_runs(const timing_rules& rules, Run&& run) {
+    const pinned_thread pin(rules.threads == 1 ? rules.cpu : -1);
     std::vector<double> seconds;
     timer warm;
     run();

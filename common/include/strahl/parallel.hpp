@@ -41,4 +41,28 @@ private:
     std::unique_ptr<control> control_;
 };
 
+// Keeps the calling thread on one logical CPU while alive, and gives it back the CPUs it had after
+// (cpu < 0: changes nothing). For timings of one thread: on a virtual machine whose virtual CPUs run at
+// different speeds for a while (another guest on the core behind one of them), a process left free lands on
+// one or the other and reads one of two speeds, and the spread across processes measures the placement, not
+// the code (chapter 16's NOTES.md, "How much a process moves"). Throws std::invalid_argument naming the CPU
+// where this process may not run on it.
+class pinned_thread {
+public:
+    explicit pinned_thread(int cpu);
+    ~pinned_thread();
+    pinned_thread(const pinned_thread&) = delete;
+    pinned_thread& operator=(const pinned_thread&) = delete;
+
+private:
+    struct saved;
+    std::unique_ptr<saved> saved_;
+};
+
+// The lowest-numbered CPU this process may run on (0 where the system does not say).
+int first_allowed_cpu();
+
+// Whether this process may run on CPU cpu.
+bool cpu_allowed(int cpu);
+
 }  // namespace strahl

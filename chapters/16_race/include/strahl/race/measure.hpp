@@ -22,6 +22,7 @@ struct timing_rules {
     double budget_s = 4.0;     // stop repeating once this much time went into one query (at least 1 run)
     int threads = 1;
     std::size_t count_rays = 8192;  // the counting run uses every k-th ray, at most this many
+    int cpu = -1;  // with one thread: builds and queries timed on this CPU alone (pinned_thread); -1: anywhere
 };
 
 // The counting run's sample: every k-th block of `block` consecutive rays (the last may be short), whole,
