@@ -1,6 +1,6 @@
 # awk -f vs_rows.awk race.csv processes/[1-5]/race.csv > vs_rows.csv
-# Chapter 14's hybrid rows against the fastest of chapters 12 and 13 (packets or single rays), against
-# Embree's own hybrid (embree-medium-packet8: rtcIntersect8/rtcOccluded8, default flags) and against
+# Chapter 14's hybrid rows (and the final tracer, `final`) against the fastest of chapters 12 and 13 (packets or
+# single rays), against Embree's own hybrid (embree-medium-packet8: rtcIntersect8/rtcOccluded8, default flags) and against
 # embree-medium, per scene and ray set (closest hit; any hit for shadow rays). The fastest rows are chosen
 # by the medians of race.csv (the first file); the ratios are each process's own (the other files, in the
 # order given: p1, p2, ...), with their median, smallest and largest.
@@ -8,7 +8,7 @@ BEGIN { FS = ","; OFS = "," }
 FNR == 1 { f++; for (i = 1; i <= NF; i++) col[$i] = i; next }
 {
     q = $6 == "shadow" ? "any" : "closest"; v = $(col[q "_mrays_s"]) + 0; k = $1 SUBSEP $6
-    g = $3 ~ /^ch14-/ ? "h" : $3 ~ /^ch1[23]-/ ? "b" : $3 == "embree-medium-packet8" ? "e" : $3 == "embree-medium" ? "m" : ""
+    g = $3 ~ /^ch14-/ || $3 == "final" ? "h" : $3 ~ /^ch1[23]-/ ? "b" : $3 == "embree-medium-packet8" ? "e" : $3 == "embree-medium" ? "m" : ""
     if (f == 1) {
         if (!(k in seen)) { seen[k]; order[++n] = k }
         if (g == "h") { rows[k] = rows[k] SUBSEP $3; mrays[k, $3] = v }
