@@ -64,7 +64,8 @@ case $nn in
 14) args=(--quick --width 32 --repeats 1 --flight-frames 2 --flight-width 64 --flight-height 36 --out "$out")
     files=(sweep.csv threshold.svg stadium_left.png flight.csv flight_first.png flight_last.png)
     sized=(flight_first.png:"64 36" flight_last.png:"64 36") ;;
-15) args=(--quick --out "$out") files=(escapes.csv spawn.csv far.csv scale.csv scale.svg table.csv escape_vs_speed.svg)
+15) args=(--quick --out "$out") files=(escapes.csv spawn.csv far.csv scale.csv scale.svg table.csv escape_vs_speed.svg
+        spawn_totals.csv escapes_by_placement.csv escapes_by_sphere.csv escapes_by_aim.csv)
     sized=() ;;
 *) echo "$0: no end-to-end run known for chapter $nn" >&2; exit 2 ;;
 esac
@@ -162,7 +163,9 @@ case $nn in
 07) stamped=(build_phases.csv quality.csv sort.csv scaling.csv) ;; 08) stamped=(builders.csv) ;;
 09) stamped=(compare.csv alpha.csv) ;; 10) stamped=(animation.csv breakeven.csv big.csv) ;;
 11) stamped=(steps.csv render.csv) ;; 12) stamped=(packets.csv) ;; 13) stamped=(wide.csv) ;;
-14) stamped=(sweep.csv flight.csv) ;; 15) stamped=(escapes.csv scale.csv table.csv) ;; *) stamped=() ;;
+14) stamped=(sweep.csv flight.csv) ;;
+15) stamped=(escapes.csv scale.csv table.csv escapes_by_placement.csv escapes_by_sphere.csv escapes_by_aim.csv) ;;
+*) stamped=() ;;
 esac
 for f in "${files[@]}"; do
     [[ $f == *.csv && -f $out/$f ]] || continue
@@ -277,7 +280,7 @@ fi
 # Chapter 15: no ray escapes the watertight test (float or double) in brute force or in a tree walked with a
 # conservative or the fast box test; the table has a row per test and box; spawn.csv a row per offset and
 # placement (13 placements x 4 offsets); scale.csv's rows and the course's range; --scenes refuses a scene
-# that is not there; --from-race's ratios.
+# that is not there; --from-race's ratios; --totals.
 if [[ $nn == 15 ]]; then
     bad=$(awk -F, 'NR > 1 && ($6 == "watertight" || $6 == "watertight-double") && $7 != "plain" && $10 != 0' \
         "$out/escapes.csv")
@@ -331,6 +334,16 @@ if [[ $nn == 15 ]]; then
     contains "$dir/ratios/race_ratios.csv" "s.ply,shadow,ch15-watertight-fast,ch15-mt-fast,1,2,2,2" "--from-race"
     runs "--from-race of a folder without processes" 1 "$program" --from-race "$dir/ratios" --out "$dir/ratios2"
     contains "$dir/err" "no race.csv" "--from-race of a folder without processes"
+    # --totals: the run's four totals again from its escapes.csv and spawn.csv, byte for byte; every offset
+    # over the 13 placements (its rays the sum of spawn.csv's); a folder without them refused.
+    runs "--totals" 0 "$program" --totals "$out" --out "$dir/totals"
+    for f in spawn_totals.csv escapes_by_placement.csv escapes_by_sphere.csv escapes_by_aim.csv; do
+        cmp -s "$dir/totals/$f" "$out/$f" || fail "--totals: $f not as the run wrote it"
+    done
+    [[ $(tail -n +2 "$out/spawn_totals.csv" | wc -l) -eq 4 ]] || fail "spawn_totals.csv has not 4 rows (offsets)"
+    want=$(awk -F, 'NR > 1 && $3 == "none" { r += $4 } END { print r }' "$out/spawn.csv")
+    grep -q "^none,$want," "$out/spawn_totals.csv" || fail "spawn_totals.csv: the no-offset row's rays are not $want"
+    runs "--totals of a folder without them" 1 "$program" --totals "$dir/ratios" --out "$dir/totals2"
 fi
 
 # Chapter 07 redraws its three plots from a folder of its CSV files (--replot DIR), the same SVG bytes as

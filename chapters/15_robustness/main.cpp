@@ -18,6 +18,7 @@
 #include "strahl/ch15/experiments.hpp"
 #include "strahl/ch15/far.hpp"
 #include "strahl/ch15/race_ratios.hpp"
+#include "strahl/ch15/totals.hpp"
 #include "strahl/ch15/scale.hpp"
 #include "strahl/machine.hpp"
 #include "strahl/parallel.hpp"
@@ -329,6 +330,17 @@ std::vector<std::string> scene_specs(const cli& args, bool quick) {
     return specs;
 }
 
+// The totals' files (totals.hpp), written into folder after prepare_output (named: --out given).
+const char* const totals_files[] = {"spawn_totals.csv", "escapes_by_placement.csv", "escapes_by_sphere.csv",
+                                    "escapes_by_aim.csv"};
+void write_totals(const ch15::totals_csvs& t, const fs::path& folder, bool named, bool force) {
+    for (const char* f : totals_files) prepare_output(folder / f, named, force);
+    const std::string* texts[] = {&t.spawn, &t.by_placement, &t.by_sphere, &t.by_aim};
+    for (int i = 0; i < 4; ++i) write_text(folder / totals_files[i], *texts[i]);
+    std::printf("wrote %s/{spawn_totals.csv, escapes_by_placement.csv, escapes_by_sphere.csv, escapes_by_aim.csv}\n",
+                folder.string().c_str());
+}
+
 int run(int argc, const char* const* argv) {
     cli args("ch15", "Chapter 15, robustness (" + std::string(track_name()) + "): five triangle tests x three box tests on closed "
              "spheres from 1e-6 to 1e7, rays aimed at their vertices and edges (escapes), secondary rays spawned with "
@@ -346,6 +358,8 @@ int run(int argc, const char* const* argv) {
                                    "(default out/15_robustness/)")
         .option("from-race", "DIR", "", "only write race_ratios.csv: the same-process speed ratios of a race run "
                 "with --processes N and chapter 15's rows (DIR/processes/*/race.csv), median and range")
+        .option("totals", "DIR", "", "only write spawn_totals.csv, escapes_by_placement.csv, escapes_by_sphere.csv and "
+                "escapes_by_aim.csv: the totals of DIR/spawn.csv and DIR/escapes.csv written earlier (no tracing)")
         .flag("quick", "the two smallest spheres, 1000 spawn points, the far-away teapot at 32 x 24 rays, the scaled teapot at 16 x 12, the teapot at 64 x 48 for the speed columns, one repeat")
         .flag("far-only", "only the teapot seen from far away: write far.csv and nothing else")
         .flag("scale-only", "only the teapot scaled from 1e-30 to 1e16: write scale.csv and scale.svg and nothing else")
@@ -361,6 +375,12 @@ int run(int argc, const char* const* argv) {
         const std::string csv = race_ratios(args.get("from-race"));
         write_text(folder / "race_ratios.csv", csv);
         std::printf("wrote %s\n", (folder / "race_ratios.csv").string().c_str());
+        return 0;
+    }
+    if (args.has("totals")) {
+        const fs::path from = args.get("totals");
+        const ch15::totals_csvs t = ch15::totals(from / "escapes.csv", from / "spawn.csv");  // read first: no folder on a bad file
+        write_totals(t, single_folder, args.has("out"), args.has("force"));
         return 0;
     }
     const bool quick = args.has("quick");
@@ -402,6 +422,7 @@ int run(int argc, const char* const* argv) {
     if (user_named) folder = args.get("out");
     for (const char* f : {"escapes.csv", "spawn.csv", "far.csv", "scale.csv", "scale.svg", "table.csv", "escape_vs_speed.svg"})
         prepare_output(folder / f, user_named, args.has("force"));
+    for (const char* f : totals_files) prepare_output(folder / f, user_named, args.has("force"));
 
     const timer clock;
     std::map<key, tally> t;
@@ -433,6 +454,7 @@ int run(int argc, const char* const* argv) {
     write_scale_plot(read_scale_csv(folder / "scale.csv"), folder / "scale.svg");  // as --replot draws it
     write_text(folder / "table.csv", table_csv);
     write_plot(t, folder / "escape_vs_speed.svg");
+    write_totals(ch15::totals(folder / "escapes.csv", folder / "spawn.csv"), folder, true, true);  // just prepared
     std::printf("wrote %s/{escapes.csv, spawn.csv, far.csv, scale.csv, scale.svg, table.csv, escape_vs_speed.svg} in %.1f s\n", folder.string().c_str(),
                 clock.seconds());
     return 0;
