@@ -88,7 +88,7 @@ std::string run_escapes(bool quick, std::map<key, tally>& t) {
     for (const sphere_size& s : spheres(quick))
         total += aimed_ray_count(s.stacks, s.slices) * places.size() * (15 + (s.brute ? 5 : 0) + (embree ? 2 : 0));
     std::ostringstream csv;
-    csv << "stacks,slices,triangles,scale,place,test,box,aim,rays,escapes\n";
+    csv << escapes_csv_header << '\n';
     progress_bar bar("escapes", total, "rays");
     for (const sphere_size& sz : spheres(quick))
         for (const placement& p : places) {
@@ -147,8 +147,7 @@ std::string run_spawn(std::size_t points) {
                 "outward and one inward ray from each, tmin = 0\n", points);
     const std::vector<placement> places = usable_placements(false);
     std::ostringstream csv;
-    csv << "scale,place,offset,rays,outward_self_hits,inward_self_hits,self_hits,leaks,self_hits_per_million,"
-           "leaks_per_million\n";
+    csv << spawn_csv_header << '\n';
     std::map<offset_kind, spawn_counts> sums;
     progress_bar bar("spawn", points * places.size() * std::size(all_offsets), "hit points");
     for (const placement& p : places) {
@@ -330,11 +329,10 @@ std::vector<std::string> scene_specs(const cli& args, bool quick) {
     return specs;
 }
 
-// The totals' files (totals.hpp), written into folder after prepare_output (named: --out given).
+// The totals' files (totals.hpp), written into folder (its files prepared by the caller: prepare_output).
 const char* const totals_files[] = {"spawn_totals.csv", "escapes_by_placement.csv", "escapes_by_sphere.csv",
                                     "escapes_by_aim.csv"};
-void write_totals(const ch15::totals_csvs& t, const fs::path& folder, bool named, bool force) {
-    for (const char* f : totals_files) prepare_output(folder / f, named, force);
+void write_totals(const ch15::totals_csvs& t, const fs::path& folder) {
     const std::string* texts[] = {&t.spawn, &t.by_placement, &t.by_sphere, &t.by_aim};
     for (int i = 0; i < 4; ++i) write_text(folder / totals_files[i], *texts[i]);
     std::printf("wrote %s/{spawn_totals.csv, escapes_by_placement.csv, escapes_by_sphere.csv, escapes_by_aim.csv}\n",
@@ -380,7 +378,8 @@ int run(int argc, const char* const* argv) {
     if (args.has("totals")) {
         const fs::path from = args.get("totals");
         const ch15::totals_csvs t = ch15::totals(from / "escapes.csv", from / "spawn.csv");  // read first: no folder on a bad file
-        write_totals(t, single_folder, args.has("out"), args.has("force"));
+        for (const char* f : totals_files) prepare_output(single_folder / f, args.has("out"), args.has("force"));
+        write_totals(t, single_folder);
         return 0;
     }
     const bool quick = args.has("quick");
@@ -454,7 +453,7 @@ int run(int argc, const char* const* argv) {
     write_scale_plot(read_scale_csv(folder / "scale.csv"), folder / "scale.svg");  // as --replot draws it
     write_text(folder / "table.csv", table_csv);
     write_plot(t, folder / "escape_vs_speed.svg");
-    write_totals(ch15::totals(folder / "escapes.csv", folder / "spawn.csv"), folder, true, true);  // just prepared
+    write_totals(ch15::totals(folder / "escapes.csv", folder / "spawn.csv"), folder);
     std::printf("wrote %s/{escapes.csv, spawn.csv, far.csv, scale.csv, scale.svg, table.csv, escape_vs_speed.svg} in %.1f s\n", folder.string().c_str(),
                 clock.seconds());
     return 0;

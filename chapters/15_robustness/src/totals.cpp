@@ -1,5 +1,6 @@
 // Totals over escapes.csv's and spawn.csv's rows (totals.hpp).
 #include "strahl/ch15/totals.hpp"
+#include "strahl/machine.hpp"
 #include "strahl/program.hpp"
 #include <algorithm>
 #include <array>
@@ -12,11 +13,6 @@
 namespace strahl::ch15 {
 
 namespace {
-
-constexpr const char* escapes_header = "stacks,slices,triangles,scale,place,test,box,aim,rays,escapes";
-constexpr const char* machine_tail = "cpu,threads,kernels,date";
-constexpr const char* spawn_header =
-    "scale,place,offset,rays,outward_self_hits,inward_self_hits,self_hits,leaks,self_hits_per_million,leaks_per_million";
 
 std::string per_million(double count, double rays) {
     char text[32];
@@ -40,7 +36,7 @@ struct grouped {
         std::ostringstream out;
         out << head;
         for (const std::string& c : columns) out << ',' << c;
-        if (!tail.empty()) out << ',' << machine_tail;
+        if (!tail.empty()) out << ',' << machine_header;
         out << '\n';
         for (const std::string& k : keys) {
             out << k;
@@ -66,8 +62,8 @@ std::string column_name(const std::string& test, const std::string& box) {
 totals_csvs totals(const std::filesystem::path& escapes_file, const std::filesystem::path& spawn_file) {
     totals_csvs out;
     const std::vector<csv_row> escapes =
-        read_csv(escapes_file, escapes_header, machine_tail, "an escapes.csv written by ch15");
-    const std::vector<csv_row> spawn = read_csv(spawn_file, spawn_header, "a spawn.csv written by ch15");
+        read_csv(escapes_file, escapes_csv_header, machine_header, "an escapes.csv written by ch15");
+    const std::vector<csv_row> spawn = read_csv(spawn_file, spawn_csv_header, "a spawn.csv written by ch15");
     grouped placement, sphere, aim;
     std::string tail;
     for (const csv_row& r : escapes) {

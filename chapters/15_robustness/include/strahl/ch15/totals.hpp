@@ -8,6 +8,12 @@
 
 namespace strahl::ch15 {
 
+// The headers of the two files the program writes and the totals read back (escapes.csv also ends with the
+// machine's columns, strahl/machine.hpp).
+inline constexpr const char* escapes_csv_header = "stacks,slices,triangles,scale,place,test,box,aim,rays,escapes";
+inline constexpr const char* spawn_csv_header =
+    "scale,place,offset,rays,outward_self_hits,inward_self_hits,self_hits,leaks,self_hits_per_million,leaks_per_million";
+
 struct totals_csvs {
     std::string spawn;         // spawn_totals.csv: offset,rays,self_hits,leaks,self_hits_per_million,leaks_per_million
     std::string by_placement;  // escapes_by_placement.csv: scale,place, then one column per test and box
