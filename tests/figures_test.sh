@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # ./course figures end to end: the drawn figures of chapters 05 to 15 (plots redrawn from the
 # committed CSVs, diagrams drawn by the chapters' code) come out byte for byte as committed under slides/img/,
-# so that every committed figure is what its program draws; an unknown chapter is refused.
+# so that every committed figure is what its program draws; the raced jobs of --measure run end to end (small);
+# an unknown chapter is refused.
 # Usage: figures_test.sh COURSE_ROOT BIN_FOLDER SCRATCH_FOLDER
 set -euo pipefail
 
@@ -23,6 +24,20 @@ while IFS= read -r f; do
 done < <(cd "$dir/tree" && find slides -type f | sort)
 [[ $n -ge 20 ]] || fail "only $n figures drawn"
 echo "figures: $n files, each as committed"
+
+# The raced jobs (--measure): each folder's command.sh runs as ./course figures --measure runs it, held against
+# its committed verdicts, shrunk by RACE_ARGS (appended last, so they win) to a few rays of one small scene;
+# what it writes lands in the scratch tree: the race's tables, each process's, and the verdicts held.
+export RACE_ARGS="--scenes builtin:teapot --width 8 --height 2 --repeats 1 --budget 0.01"
+runs "figures 16 --measure" 0 "$root/course" figures 16 --measure --bin "$bin" --into "$dir/raced"
+unset RACE_ARGS
+for folder in claims_02_04 claims claims_10; do
+    for f in race.csv spread.md compare.csv compare.md verdicts.md processes/5/race.csv; do
+        [[ -s $dir/raced/slides/img/16_race/$folder/$f ]] || fail "figures 16 --measure: no $folder/$f"
+    done
+    contains "$dir/raced/slides/img/16_race/$folder/verdicts.md" "slides/img/16_race/$folder/compare.csv" "$folder's verdicts held against the committed ones"
+    contains "$dir/out" "slides/img/16_race/$folder: The same comparisons" "figures 16 --measure says how many verdicts held"
+done
 
 runs "figures 99" 1 "$root/course" figures 99 --bin "$bin" --into "$dir/tree2"
 contains "$dir/err" "no chapter 99" "figures 99"

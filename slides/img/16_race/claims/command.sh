@@ -1,5 +1,8 @@
-# The race behind the verdicts that chapters 05 to 11 quote (run from the repository root; 5 processes, about 11 minutes on the 2-core VM).
-build/release/bin/race --scenes ../shared/scenes/bunny.ply,../shared/scenes/sponza.obj --processes 5 \
+# The race behind the verdicts that chapters 05 to 11 quote (about 11 minutes on the 2-core VM).
+# Run from the repository root. RACE: the race program (default build/release/bin/race); OUT: where the run goes
+# (default this folder); further arguments go to the race (./course figures --measure adds --against this
+# folder's compare.csv and a --cache). Five processes, one thread's timings on one CPU.
+"${RACE:-build/release/bin/race}" --scenes ../shared/scenes/bunny.ply,../shared/scenes/sponza.obj --processes 5 \
  --accels ch04-median,ch05-sweep,ch05-binned16,ch05-binned16-fast,ch06-binned16-reinserted,ch06-binned16-reinserted-fast,ch07-lbvh30-fast,ch08-hlbvh-fast,ch08-ploc16-fast,ch08-trbvh-fast,ch08-atrbvh-fast,ch09-sbvh-fast,ch11-virtual,ch11-variant,ch11-type-sorted,ch11-triangles,ch11-inlined,ch11-soa,ch13-bvh16,embree-low,embree-medium,embree-high \
  --compare ch05-binned16:ch04-median,ch05-binned16:ch05-sweep,ch05-binned16-fast:ch05-binned16,ch05-binned16-fast:embree-medium,ch06-binned16-reinserted:ch05-binned16,ch06-binned16-reinserted-fast:ch05-binned16-fast,ch06-binned16-reinserted-fast:embree-medium,ch07-lbvh30-fast:ch05-binned16-fast,ch08-hlbvh-fast:ch05-binned16-fast,ch08-hlbvh-fast:ch07-lbvh30-fast,ch08-ploc16-fast:ch05-binned16-fast,ch08-trbvh-fast:ch05-binned16-fast,ch08-atrbvh-fast:ch05-binned16-fast,ch06-binned16-reinserted-fast:ch08-trbvh-fast,embree-low:ch06-binned16-reinserted-fast,embree-low:ch05-binned16-fast,ch09-sbvh-fast:ch05-binned16-fast,ch06-binned16-reinserted-fast:ch09-sbvh-fast,embree-high:embree-medium,ch11-soa:ch11-virtual,ch11-triangles:ch11-virtual,ch11-variant:ch11-virtual,ch11-type-sorted:ch11-virtual,ch11-type-sorted:ch11-variant,ch11-inlined:ch11-triangles,ch11-soa:ch11-inlined,ch13-bvh16:ch11-virtual,embree-medium:ch11-virtual \
- --out slides/img/16_race/claims
+ --out "${OUT:-slides/img/16_race/claims}" "$@"
