@@ -4,7 +4,7 @@
 #
 # Usage: check_numbers.sh [--list] COURSE_ROOT
 #
-# Texts: README.md, chapters/*/README.md, chapters/*/NOTES.md and slides/*.md.
+# Texts: README.md, chapters/*/README.md, chapters/*/NOTES.md, chapters/*/NOTES_earlier.md and slides/*.md.
 #
 # Convention. An HTML comment on the line(s) before a Markdown table declares where its numbers come from:
 #
@@ -101,7 +101,7 @@ if [[ -z $root || ! -d $root ]]; then
 fi
 cd "$root"
 texts=()
-for f in README.md chapters/*/README.md chapters/*/NOTES.md slides/*.md; do
+for f in README.md chapters/*/README.md chapters/*/NOTES.md chapters/*/NOTES_earlier.md slides/*.md; do
     [[ -f $f ]] && texts+=("$f")
 done
 
