@@ -36,7 +36,8 @@ TEST_CASE("ch15 totals: rates over all rows of a group, a column per test and bo
     CHECK(t.by_aim ==
           "aim,mt_fast,embree_robust,cpu,threads,kernels,date\n"
           "vertex,52500.0,10000.0,AMD EPYC,2,AVX512,2026-12-05\n"
-          "edge,0.0,,AMD EPYC,2,AVX512,2026-12-05\n");
+          "edge,0.0,,AMD EPYC,2,AVX512,2026-12-05\n"
+          "all,42000.0,10000.0,AMD EPYC,2,AVX512,2026-12-05\n");  // mt_fast: 63 of 1,500 rays
     CHECK(t.spawn ==
           "offset,rays,self_hits,leaks,self_hits_per_million,leaks_per_million\n"
           "none,1000,200,0,200000.0,0.0\n"

@@ -75,6 +75,9 @@ totals_csvs totals(const std::filesystem::path& escapes_file, const std::filesys
         aim.add(c[7], column, rays, count);
         if (c.size() > 10) tail = csv_field(c[10]) + ',' + c[11] + ',' + csv_field(c[12]) + ',' + csv_field(c[13]);
     }
+    // Last, every aim together: the rate over all the rays.
+    for (const csv_row& r : escapes)
+        aim.add("all", column_name(r.cells[5], r.cells[6]), csv_number(escapes_file, r, 8), csv_number(escapes_file, r, 9));
     out.by_placement = placement.csv("scale,place", tail);
     out.by_sphere = sphere.csv("stacks,slices,triangles", tail);
     out.by_aim = aim.csv("aim", tail);

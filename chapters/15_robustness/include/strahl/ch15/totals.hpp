@@ -18,7 +18,7 @@ struct totals_csvs {
     std::string spawn;         // spawn_totals.csv: offset,rays,self_hits,leaks,self_hits_per_million,leaks_per_million
     std::string by_placement;  // escapes_by_placement.csv: scale,place, then one column per test and box
     std::string by_sphere;     // escapes_by_sphere.csv: stacks,slices,triangles, then the same columns
-    std::string by_aim;        // escapes_by_aim.csv: aim, then the same columns
+    std::string by_aim;        // escapes_by_aim.csv: aim, then the same columns; a last row "all": every ray
 };
 
 // From the escapes.csv and spawn.csv this program wrote (read back with read_csv: a file that is neither
