@@ -31,7 +31,7 @@ echo "figures: $n files, each as committed"
 export RACE_ARGS="--scenes builtin:teapot --width 8 --height 2 --repeats 1 --budget 0.01"
 runs "figures 16 --measure" 0 "$root/course" figures 16 --measure --bin "$bin" --into "$dir/raced"
 unset RACE_ARGS
-for folder in claims_02_04 claims claims_10; do
+for folder in claims_02_04 claims claims_10 claims_13_15 claims_16; do
     for f in race.csv spread.md compare.csv compare.md verdicts.md processes/5/race.csv; do
         [[ -s $dir/raced/slides/img/16_race/$folder/$f ]] || fail "figures 16 --measure: no $folder/$f"
     done
