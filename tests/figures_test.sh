@@ -31,13 +31,17 @@ echo "figures: $n files, each as committed"
 export RACE_ARGS="--scenes builtin:teapot --width 8 --height 2 --repeats 1 --budget 0.01"
 runs "figures 16 --measure" 0 "$root/course" figures 16 --measure --bin "$bin" --into "$dir/raced"
 unset RACE_ARGS
-for folder in claims_02_04 claims claims_10 claims_13_15 claims_16; do
+raced=0
+for script in "$root"/slides/img/16_race/*/command.sh; do
+    folder=$(basename "$(dirname "$script")")
+    raced=$((raced + 1))
     for f in race.csv spread.md compare.csv compare.md verdicts.md processes/5/race.csv; do
         [[ -s $dir/raced/slides/img/16_race/$folder/$f ]] || fail "figures 16 --measure: no $folder/$f"
     done
     contains "$dir/raced/slides/img/16_race/$folder/verdicts.md" "slides/img/16_race/$folder/compare.csv" "$folder's verdicts held against the committed ones"
     contains "$dir/out" "slides/img/16_race/$folder: The same comparisons" "figures 16 --measure says how many verdicts held"
 done
+[[ $raced -ge 5 ]] || fail "only $raced raced folders under slides/img/16_race/"
 
 runs "figures 99" 1 "$root/course" figures 99 --bin "$bin" --into "$dir/tree2"
 contains "$dir/err" "no chapter 99" "figures 99"
